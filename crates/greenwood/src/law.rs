@@ -143,7 +143,10 @@ pub fn alpha_of_beta(k: f64, beta: f64) -> Result<Option<CrackPoint>, GreenwoodE
         let z = p.zeta();
         Ok((p, z - target))
     };
-    let (mut lo, mut hi) = (-60.0 * std::f64::consts::LN_10, 60.0 * std::f64::consts::LN_10);
+    let (mut lo, mut hi) = (
+        -60.0 * std::f64::consts::LN_10,
+        60.0 * std::f64::consts::LN_10,
+    );
     let (mut p_lo, mut f_lo) = f(lo)?;
     let (mut p_hi, mut f_hi) = f(hi)?;
     if f_lo <= 0.0 {

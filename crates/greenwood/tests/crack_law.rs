@@ -51,7 +51,9 @@ fn distances_agree_with_beta() {
 #[test]
 fn sign_of_v_is_sign_of_one_minus_beta() {
     let law = CrackLaw::new(K).unwrap();
-    for beta in [0.011, 0.05, 0.5, 0.99, 0.999_999, 1.000_001, 1.01, 2.0, 50.0, 99.9] {
+    for beta in [
+        0.011, 0.05, 0.5, 0.99, 0.999_999, 1.000_001, 1.01, 2.0, 50.0, 99.9,
+    ] {
         let v = law.v(beta).unwrap();
         assert_eq!(v > 0.0, beta < 1.0, "beta = {beta}, v = {v}");
     }
@@ -88,7 +90,10 @@ fn direct_inversion_round_trips() {
             let q = alpha_of_beta(K, p.beta).unwrap().unwrap();
             assert_eq!(q.branch, branch);
             // beta is rounded to f64: v is then determined to ~ cond * 1e-16
-            assert!(((q.v - p.v) / p.v).abs() < 1e-9, "alpha {alpha}: {p:?} vs {q:?}");
+            assert!(
+                ((q.v - p.v) / p.v).abs() < 1e-9,
+                "alpha {alpha}: {p:?} vs {q:?}"
+            );
         }
     }
 }
@@ -122,7 +127,10 @@ fn table_interpolation_bound() {
         // beta itself is rounded to f64 before lookup; near beta = 1 that rounding alone moves v
         // by |d ln v / d ln|beta-1|| * 1e-16 / |beta - 1|, below 1e-8 for alpha <= 1e8.
         assert!(worst < 1e-8, "k = {k}: worst relative error {worst:e}");
-        assert!(worst_slope < 1e-5, "k = {k}: worst slope error {worst_slope:e}");
+        assert!(
+            worst_slope < 1e-5,
+            "k = {k}: worst slope error {worst_slope:e}"
+        );
     }
 }
 

@@ -59,7 +59,9 @@ fn one_minus_j3_exact(a: f64) -> f64 {
 
 fn alphas() -> Vec<f64> {
     // 1e-6 ..= 1e8, 8 points a decade
-    (0..=112).map(|i| 10f64.powf(-6.0 + i as f64 / 8.0)).collect()
+    (0..=112)
+        .map(|i| 10f64.powf(-6.0 + i as f64 / 8.0))
+        .collect()
 }
 
 fn rel(a: f64, b: f64) -> f64 {
@@ -72,17 +74,19 @@ fn dawson_reference_is_right() {
     assert!((dawson(1.0) - 0.538_079_506_9).abs() < 1e-10);
     assert!((dawson(2.0) - 0.301_340_388_9).abs() < 1e-10);
     // Both series agree where they overlap.
-    assert!(rel(dawson(6.0), {
-        let x: f64 = 6.0;
-        let y = 1.0 / (2.0 * x * x);
-        let mut t = 1.0;
-        let mut s = 1.0;
-        for n in 1..40 {
-            t *= (2.0 * n as f64 - 1.0) * y;
-            s += t;
-        }
-        s / (2.0 * x)
-    }) < 1e-13);
+    assert!(
+        rel(dawson(6.0), {
+            let x: f64 = 6.0;
+            let y = 1.0 / (2.0 * x * x);
+            let mut t = 1.0;
+            let mut s = 1.0;
+            for n in 1..40 {
+                t *= (2.0 * n as f64 - 1.0) * y;
+                s += t;
+            }
+            s / (2.0 * x)
+        }) < 1e-13
+    );
 }
 
 /// J3 = D(sqrt(alpha)) / sqrt(alpha): substitute xi = s^2 in Appendix A's J3.

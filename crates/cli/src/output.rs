@@ -1,0 +1,73 @@
+//! Printing a result: aligned `name = value unit` lines by default, one JSON object with `--json`.
+
+use crate::error::CliError;
+use serde_json::{Map, Value};
+
+/// One command's result: named numbers with units, plus free-form JSON fields.
+#[derive(Debug, Default)]
+pub struct Report {
+    title: String,
+    rows: Vec<(String, Value, &'static str)>,
+}
+
+impl Report {
+    /// An empty report with a one-line title for the human-readable form.
+    pub fn new(title: impl Into<String>) -> Self {
+        Self {
+            title: title.into(),
+            rows: Vec::new(),
+        }
+    }
+
+    /// Adds a number (SI `unit`). A NaN or infinity is refused: the CLI never prints one.
+    pub fn number(&mut self, key: &str, value: f64, unit: &'static str) -> Result<(), CliError> {
+        if !value.is_finite() {
+            return Err(CliError::Compute(format!(
+                "internal error: {key} = {value} is not finite"
+            )));
+        }
+        self.rows.push((key.to_string(), Value::from(value), unit));
+        Ok(())
+    }
+
+    /// Adds any JSON value (a string, a list, null).
+    pub fn value(&mut self, key: &str, value: Value, unit: &'static str) {
+        self.rows.push((key.to_string(), value, unit));
+    }
+
+    /// The report as one JSON object (keys in insertion order).
+    pub fn to_json(&self) -> String {
+        let mut map = Map::new();
+        for (k, v, _) in &self.rows {
+            map.insert(k.clone(), v.clone());
+        }
+        Value::Object(map).to_string()
+    }
+
+    /// The report as aligned human-readable lines.
+    pub fn to_human(&self) -> String {
+        let width = self.rows.iter().map(|r| r.0.len()).max().unwrap_or(0);
+        let mut out = format!("{}\n", self.title);
+        for (k, v, unit) in &self.rows {
+            let shown = match v {
+                Value::Number(n) => n
+                    .as_f64()
+                    .map_or_else(|| n.to_string(), |x| format!("{x:.6e}")),
+                Value::String(s) => s.clone(),
+                Value::Null => "none".into(),
+                other => other.to_string(),
+            };
+            out.push_str(&format!("  {k:<width$} = {shown} {unit}\n"));
+        }
+        out
+    }
+
+    /// Prints the report in the requested form.
+    pub fn print(&self, json: bool) {
+        if json {
+            println!("{}", self.to_json());
+        } else {
+            print!("{}", self.to_human());
+        }
+    }
+}

@@ -1,0 +1,91 @@
+//! The `stickiness` command as a user runs it: JSON contract, defaults, bad input.
+
+use std::process::Command;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_stickiness"))
+        .args(args)
+        .output()
+        .expect("binary runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let (code, out, err) = run(args);
+    assert_eq!(code, 0, "{err}");
+    serde_json::from_str(&out).expect("one JSON object")
+}
+
+/// Defaults are the paper's CO2 case (R1 = 60 um): V_stick,JKR = 1.66e-2 m/s (Section 5.1).
+#[test]
+fn jkr_defaults_and_keys() {
+    let v = json(&["jkr", "--json"]);
+    for key in [
+        "a_eq",
+        "delta_eq",
+        "tabor",
+        "f_crit",
+        "delta_crit",
+        "e_stick",
+        "e_break",
+        "v_stick_jkr",
+    ] {
+        assert!(v[key].as_f64().is_some(), "missing {key}");
+    }
+    assert!((v["v_stick_jkr"].as_f64().unwrap() - 1.66e-2).abs() < 5e-5);
+    let (code, text, _) = run(&["jkr"]);
+    assert_eq!(code, 0);
+    assert!(text.contains("v_stick_jkr") && text.contains("m/s"));
+}
+
+/// Sections 2.6 and 5.4 give two CO2 densities: --density 1650 scales V_stick,JKR by sqrt(1560/1650).
+#[test]
+fn density_override_scales_v_stick_jkr() {
+    let a = json(&["jkr", "--json"])["v_stick_jkr"].as_f64().unwrap();
+    let b = json(&["jkr", "--density", "1650", "--json"])["v_stick_jkr"]
+        .as_f64()
+        .unwrap();
+    assert!((b / a - (1560.0f64 / 1650.0).sqrt()).abs() < 1e-12);
+}
+
+/// Appendix A / Figure 1: v(k, 1) = 0 and sign(v) = sign(1 - beta).
+#[test]
+fn crack_law_keys_and_signs() {
+    let v = json(&["crack-law", "--k", "0.01", "--beta", "2", "--json"]);
+    for key in ["k", "beta", "alpha", "v"] {
+        assert!(v.get(key).is_some(), "missing {key}");
+    }
+    assert!(v["v"].as_f64().unwrap() < 0.0);
+    let v = json(&["crack-law", "--beta", "0.5", "--json"]);
+    assert!(v["v"].as_f64().unwrap() > 0.0);
+    let v = json(&["crack-law", "--beta", "1", "--json"]);
+    assert_eq!(v["v"].as_f64().unwrap(), 0.0);
+}
+
+#[test]
+fn bad_input_names_the_flag_and_range() {
+    for (args, flag) in [
+        (vec!["jkr", "--radius", "-1"], "--radius"),
+        (vec!["jkr", "--radius", "0"], "--radius"),
+        (vec!["jkr", "--poisson", "0.5"], "--poisson"),
+        (vec!["jkr", "--poisson", "-1"], "--poisson"),
+        (vec!["jkr", "--young", "nan"], "--young"),
+        (vec!["crack-law", "--k", "1", "--beta", "0.5"], "--k"),
+        (vec!["crack-law", "--k", "0.01", "--beta", "200"], "--beta"),
+    ] {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty());
+        assert!(
+            err.contains(flag) && err.contains("allowed range"),
+            "{args:?}: {err}"
+        );
+    }
+    let (code, _, err) = run(&["jkr", "--material", "co3"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("co2, h2o") && err.contains("JSON"), "{err}");
+}

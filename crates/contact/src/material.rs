@@ -1,0 +1,143 @@
+//! Bulk material properties of a grain (Arakawa & Krijt 2021, Section 3).
+
+use crate::ContactError;
+use serde::{Deserialize, Serialize};
+use std::path::Path;
+
+/// Names of the built-in materials, for messages.
+pub const PRESETS: &str = "co2, h2o";
+
+/// The four material constants of the model, in SI units.
+///
+/// `gamma_sv` is the surface free energy; the contact uses the work of adhesion
+/// `gamma = 2 gamma_sv` (Section 3.1). The same four names are the fields of a material JSON file.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Material {
+    /// Surface free energy gamma_SV (J/m^2).
+    pub gamma_sv: f64,
+    /// (Relaxed) Young's modulus E (Pa).
+    pub young: f64,
+    /// Poisson ratio nu (dimensionless, -1 < nu < 0.5).
+    pub poisson: f64,
+    /// Material density rho (kg/m^3).
+    pub density: f64,
+}
+
+/// Young's modulus (Pa) and Poisson ratio from the longitudinal and transverse sound speeds
+/// `v_lg`, `v_ts` (m/s) and the density `rho` (kg/m^3) (Section 3.2):
+/// `G = rho v_ts^2`, `K = rho v_lg^2 - 4G/3`, `E = 9KG/(3K + G)`, `nu = (3K - 2G)/(2(3K + G))`.
+pub fn elastic_from_sound_speeds(v_lg: f64, v_ts: f64, rho: f64) -> (f64, f64) {
+    let g = rho * v_ts * v_ts;
+    let k = rho * v_lg * v_lg - 4.0 * g / 3.0;
+    let young = 9.0 * k * g / (3.0 * k + g);
+    let poisson = (3.0 * k - 2.0 * g) / (2.0 * (3.0 * k + g));
+    (young, poisson)
+}
+
+impl Material {
+    /// CO2 ice (Section 3): gamma_SV = 0.08 J/m^2 (Wood 1999); E and nu from the sound speeds
+    /// 2900 and 1650 m/s (Yamashita et al. 1997) at rho = 1560 kg/m^3 (Section 2.6), which gives
+    /// E = 10.7 GPa and nu = 0.26. (Section 5.4 uses rho = 1650 kg/m^3; set `density` to change it.)
+    pub fn co2() -> Self {
+        let density = 1560.0;
+        let (young, poisson) = elastic_from_sound_speeds(2900.0, 1650.0, density);
+        Self {
+            gamma_sv: 0.08,
+            young,
+            poisson,
+            density,
+        }
+    }
+
+    /// H2O ice (Sections 3 and 5.2): gamma_SV = 0.1 J/m^2, E = 7 GPa, nu = 0.25, rho = 930 kg/m^3.
+    pub fn h2o() -> Self {
+        Self {
+            gamma_sv: 0.1,
+            young: 7e9,
+            poisson: 0.25,
+            density: 930.0,
+        }
+    }
+
+    /// A built-in material by name (`co2`, `h2o`; case-insensitive).
+    pub fn preset(name: &str) -> Option<Self> {
+        match name.to_ascii_lowercase().as_str() {
+            "co2" => Some(Self::co2()),
+            "h2o" => Some(Self::h2o()),
+            _ => None,
+        }
+    }
+
+    /// A preset name, or else a path to a JSON material file.
+    pub fn from_name_or_path(name: &str) -> Result<Self, ContactError> {
+        if let Some(m) = Self::preset(name) {
+            return Ok(m);
+        }
+        let path = Path::new(name);
+        if path.is_file() {
+            return Self::from_json_file(path);
+        }
+        Err(ContactError::UnknownMaterial {
+            name: name.to_string(),
+            presets: PRESETS,
+        })
+    }
+
+    /// Parses `{"gamma_sv": .., "young": .., "poisson": .., "density": ..}` (SI units) and
+    /// validates it. Unknown or missing fields are errors that name the field.
+    pub fn from_json_str(json: &str) -> Result<Self, ContactError> {
+        let m: Self = serde_json::from_str(json).map_err(|e| ContactError::MaterialFile {
+            path: "<string>".into(),
+            message: e.to_string(),
+        })?;
+        m.validate()?;
+        Ok(m)
+    }
+
+    /// Reads and validates a JSON material file (see [`Material::from_json_str`]).
+    pub fn from_json_file(path: &Path) -> Result<Self, ContactError> {
+        let shown = path.display().to_string();
+        let text = std::fs::read_to_string(path).map_err(|e| ContactError::MaterialFile {
+            path: shown.clone(),
+            message: e.to_string(),
+        })?;
+        Self::from_json_str(&text).map_err(|e| match e {
+            ContactError::MaterialFile { message, .. } => ContactError::MaterialFile {
+                path: shown,
+                message,
+            },
+            other => other,
+        })
+    }
+
+    /// Checks every field: finite, gamma_sv, young, density > 0 and -1 < poisson < 0.5.
+    pub fn validate(&self) -> Result<(), ContactError> {
+        positive("gamma_sv", self.gamma_sv, "J/m^2")?;
+        positive("young", self.young, "Pa")?;
+        positive("density", self.density, "kg/m^3")?;
+        if !(self.poisson.is_finite() && self.poisson > -1.0 && self.poisson < 0.5) {
+            return Err(ContactError::OutOfRange {
+                field: "poisson",
+                value: self.poisson,
+                allowed: "-1 < poisson < 0.5",
+                unit: "dimensionless",
+            });
+        }
+        Ok(())
+    }
+}
+
+/// `Ok` when `value` is finite and > 0, else an [`ContactError::OutOfRange`] naming `field`.
+pub fn positive(field: &'static str, value: f64, unit: &'static str) -> Result<(), ContactError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(ContactError::OutOfRange {
+            field,
+            value,
+            allowed: "> 0 and finite",
+            unit,
+        })
+    }
+}

@@ -1,0 +1,212 @@
+//! The contact of two identical spheres: JKR equilibrium, forces, energies (Section 2) and the
+//! JKR sticking and breaking energies (Sections 5.1 and 6).
+
+use crate::material::positive;
+use crate::{ContactError, Material};
+use std::f64::consts::PI;
+
+/// Range of action of the surface forces, epsilon = 0.3 nm (Section 2.2, after Krijt et al. 2013), in m.
+pub const SURFACE_FORCE_RANGE: f64 = 0.3e-9;
+
+/// Coefficient of `V_stick,JKR = (14.18 / m*)^(1/2) (gamma^5 R^4 / E*^2)^(1/6)` (Thornton & Ning 1998;
+/// Section 5.1), dimensionless.
+pub const THORNTON_NING_14_18: f64 = 14.18;
+
+/// `E_stick,JKR = 0.9355 F_crit delta_crit` (Section 6), dimensionless.
+pub const E_STICK_COEFF: f64 = 0.9355;
+
+/// `E_break,JKR = 1.54 F_crit delta_crit` (Section 6, Wada et al. 2007), dimensionless.
+pub const E_BREAK_COEFF: f64 = 1.54;
+
+/// Head-on contact of two identical spheres of radius `r1` made of one [`Material`].
+///
+/// Reduced quantities (Section 2.1): `R = R1/2`, `E* = E / (2 (1 - nu^2))`, `m* = m1/2` with
+/// `m1 = 4 pi rho R1^3 / 3`, and the work of adhesion `gamma = 2 gamma_SV` (Section 3.1), which is
+/// the gamma of every formula below. All inputs and outputs are SI.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Contact {
+    material: Material,
+    r1: f64,
+    epsilon: f64,
+}
+
+impl Contact {
+    /// Contact of two spheres of radius `r1` (m, > 0) made of `material` (validated), with the
+    /// surface-force range epsilon = [`SURFACE_FORCE_RANGE`].
+    pub fn new(material: Material, r1: f64) -> Result<Self, ContactError> {
+        material.validate()?;
+        positive("radius", r1, "m")?;
+        Ok(Self {
+            material,
+            r1,
+            epsilon: SURFACE_FORCE_RANGE,
+        })
+    }
+
+    /// The same contact with another surface-force range epsilon (m, > 0).
+    pub fn with_epsilon(mut self, epsilon: f64) -> Result<Self, ContactError> {
+        positive("epsilon", epsilon, "m")?;
+        self.epsilon = epsilon;
+        Ok(self)
+    }
+
+    /// The material (SI).
+    pub fn material(&self) -> &Material {
+        &self.material
+    }
+
+    /// Particle radius R1 (m).
+    pub fn r1(&self) -> f64 {
+        self.r1
+    }
+
+    /// Surface-force range epsilon (m).
+    pub fn epsilon(&self) -> f64 {
+        self.epsilon
+    }
+
+    /// Reduced radius R = R1/2 (m).
+    pub fn reduced_radius(&self) -> f64 {
+        0.5 * self.r1
+    }
+
+    /// Contact modulus E* = E / (2 (1 - nu^2)) (Pa).
+    pub fn e_star(&self) -> f64 {
+        let nu = self.material.poisson;
+        self.material.young / (2.0 * (1.0 - nu * nu))
+    }
+
+    /// Mass of one particle m1 = 4 pi rho R1^3 / 3 (kg).
+    pub fn m1(&self) -> f64 {
+        4.0 * PI * self.material.density * self.r1.powi(3) / 3.0
+    }
+
+    /// Reduced mass m* = m1/2 (kg).
+    pub fn m_star(&self) -> f64 {
+        0.5 * self.m1()
+    }
+
+    /// Work of adhesion gamma = 2 gamma_SV (J/m^2).
+    pub fn gamma(&self) -> f64 {
+        2.0 * self.material.gamma_sv
+    }
+
+    /// Equilibrium contact radius a_eq = (9 pi gamma R^2 / (2 E*))^(1/3) (m) (Section 2.2).
+    pub fn a_eq(&self) -> f64 {
+        let r = self.reduced_radius();
+        (9.0 * PI * self.gamma() * r * r / (2.0 * self.e_star())).cbrt()
+    }
+
+    /// Equilibrium mutual approach delta_eq = (3 pi^2 R gamma^2 / (4 E*^2))^(1/3) = a_eq^2 / (3R) (m).
+    pub fn delta_eq(&self) -> f64 {
+        let (g, e) = (self.gamma(), self.e_star());
+        (3.0 * PI * PI * self.reduced_radius() * g * g / (4.0 * e * e)).cbrt()
+    }
+
+    /// Tabor parameter mu = (R gamma^2 / E*^2)^(1/3) / epsilon (dimensionless) (Section 2.2);
+    /// JKR theory needs mu >> 1.
+    pub fn tabor(&self) -> f64 {
+        let (g, e) = (self.gamma(), self.e_star());
+        (self.reduced_radius() * g * g / (e * e)).cbrt() / self.epsilon
+    }
+
+    /// Pull-off force F_crit = 3 pi gamma R / 2 (N) (Section 6).
+    pub fn f_crit(&self) -> f64 {
+        1.5 * PI * self.gamma() * self.reduced_radius()
+    }
+
+    /// Critical pulling length delta_crit = (9/16)^(1/3) delta_eq (m) (Section 6).
+    pub fn delta_crit(&self) -> f64 {
+        (9.0f64 / 16.0).cbrt() * self.delta_eq()
+    }
+
+    /// JKR sticking velocity V_stick,JKR = (14.18/m*)^(1/2) (gamma^5 R^4 / E*^2)^(1/6) (m/s)
+    /// (Thornton & Ning 1998; Section 5.1).
+    pub fn v_stick_jkr(&self) -> f64 {
+        let (g, e, r) = (self.gamma(), self.e_star(), self.reduced_radius());
+        (THORNTON_NING_14_18 / self.m_star()).sqrt()
+            * (g.powi(5) * r.powi(4) / (e * e)).powf(1.0 / 6.0)
+    }
+
+    /// Energy dissipated in a JKR bouncing collision E_stick,JKR = m* V_stick,JKR^2 / 2 (J)
+    /// (Section 6; equals 0.9355 F_crit delta_crit to the rounding of 14.18).
+    pub fn e_stick_jkr(&self) -> f64 {
+        0.5 * self.m_star() * self.v_stick_jkr().powi(2)
+    }
+
+    /// Energy to break a contact at equilibrium E_break,JKR = 1.54 F_crit delta_crit (J) (Section 6).
+    pub fn e_break_jkr(&self) -> f64 {
+        E_BREAK_COEFF * self.f_crit() * self.delta_crit()
+    }
+
+    /// Elastic force F_E = (2E*/(3R)) (3 a delta R - a^3) (N) at contact radius `a` (m) and mutual
+    /// approach `delta` (m) (Section 2.5); positive is repulsive.
+    pub fn f_e(&self, a: f64, delta: f64) -> f64 {
+        let r = self.reduced_radius();
+        2.0 * self.e_star() / (3.0 * r) * (3.0 * a * delta * r - a.powi(3))
+    }
+
+    /// Viscoelastic drag F_D = 2 A E* a delta_dot (N) with A = T_vis / nu^2 (s) (Section 2.5), at
+    /// contact radius `a` (m), approach speed `delta_dot` (m/s) and relaxation time `t_vis` (s).
+    pub fn f_d(&self, a: f64, delta_dot: f64, t_vis: f64) -> f64 {
+        2.0 * self.drag_time(t_vis) * self.e_star() * a * delta_dot
+    }
+
+    /// The drag coefficient A = T_vis / nu^2 (s) for relaxation time `t_vis` (s).
+    pub fn drag_time(&self, t_vis: f64) -> f64 {
+        let nu = self.material.poisson;
+        t_vis / (nu * nu)
+    }
+
+    /// Elastic strain energy U_E(a, delta) (J) (Section 2.1), written as
+    /// `E* a [(delta - a^2/(3R))^2 + 4 a^4 / (45 R^2)]`, which is the paper's expression and shows U_E > 0.
+    pub fn u_e(&self, a: f64, delta: f64) -> f64 {
+        let r = self.reduced_radius();
+        let d = delta - a * a / (3.0 * r);
+        self.e_star() * a * (d * d + 4.0 * a.powi(4) / (45.0 * r * r))
+    }
+
+    /// Surface energy U_S = -pi a^2 gamma (J) at contact radius `a` (m) (Section 2.2).
+    pub fn u_s(&self, a: f64) -> f64 {
+        -PI * a * a * self.gamma()
+    }
+
+    /// Total mechanical energy of the collision `m* delta_dot^2 / 2 + U_E - pi a^2 gamma` (J).
+    /// Under the model it never increases: F_D dissipates and the crack speed has the sign of
+    /// `1 - beta`.
+    pub fn total_energy(&self, a: f64, delta: f64, delta_dot: f64) -> f64 {
+        0.5 * self.m_star() * delta_dot * delta_dot + self.u_e(a, delta) + self.u_s(a)
+    }
+
+    /// Apparent surface energy in equilibrium G_eff = E* (a^2 - delta R)^2 / (2 pi a R^2) (J/m^2)
+    /// (Section 2.4).
+    pub fn g_eff(&self, a: f64, delta: f64) -> f64 {
+        let r = self.reduced_radius();
+        let s = a * a - delta * r;
+        self.e_star() * s * s / (2.0 * PI * a * r * r)
+    }
+
+    /// Normalized apparent surface energy beta = G_eff / gamma (dimensionless).
+    pub fn beta(&self, a: f64, delta: f64) -> f64 {
+        self.g_eff(a, delta) / self.gamma()
+    }
+
+    /// Attractive stress across the crack sigma0 = gamma / epsilon (Pa) (Section 2.3).
+    pub fn sigma0(&self) -> f64 {
+        self.gamma() / self.epsilon
+    }
+
+    /// The crack-speed unit `E* gamma / (sigma0^2 T_vis)` (m/s): `a_dot = v(k, beta)` times this,
+    /// for relaxation time `t_vis` (s, > 0) (Section 2.3).
+    pub fn crack_speed_unit(&self, t_vis: f64) -> f64 {
+        let s0 = self.sigma0();
+        self.e_star() * self.gamma() / (s0 * s0 * t_vis)
+    }
+
+    /// Contact radius at first contact (delta = 0) where beta = (1 + eps) k:
+    /// `a = [2 pi R^2 (1 + eps) k gamma / E*]^(1/3)` (m) (Section 4.1), for `k` and `eps` dimensionless.
+    pub fn initial_contact_radius(&self, k: f64, eps: f64) -> f64 {
+        let r = self.reduced_radius();
+        (2.0 * PI * r * r * (1.0 + eps) * k * self.gamma() / self.e_star()).cbrt()
+    }
+}
