@@ -1,0 +1,451 @@
+//! One head-on collision: integrate from first contact to separation or to a proof of sticking.
+//!
+//! Section 2.6 of Arakawa & Krijt (2021): start at `delta = 0`, `delta_dot = V_in`,
+//! `beta = (1 + eps) k`; end when `beta = (1 - eps)/k`, where the spheres separate with
+//! `V_out = delta_dot`. Outcomes (Section 4): bouncing (`V_out < 0`, `e = -V_out/V_in > 0`),
+//! double collision (`V_out > 0`, `e < 0`), sticking (the contact never ends, `e = 0`).
+//!
+//! # Deciding "sticking"
+//! 1. **Energy bound (rigorous).** The total energy `m* delta_dot^2/2 + U_E - pi a^2 gamma` never
+//!    increases (F_D dissipates; the crack speed has the sign of `1 - beta`), and no state with
+//!    `beta = (1 - eps)/k` has energy below [`crate::model::end_energy_bound`] (0 for k < 0.33).
+//!    Once the energy is below that bound by a margin larger than the integration error, the
+//!    contact can never end.
+//! 2. **Oscillations (weak damping).** For T_vis below about 1e-11 s the energy can stay above the
+//!    bound for thousands of oscillations. A contact that has completed
+//!    [`SolverOptions::max_oscillations`] full oscillations after the first compression (maxima of
+//!    delta while still in contact) has already failed to separate on an outward swing with more
+//!    energy than any later one has; it is declared sticking. The tests show that the transitions
+//!    do not move when this number is changed.
+
+use crate::model::{self, Params, NSTATES};
+use crate::scales::Scales;
+use crate::DynamicsError;
+use contact::Contact;
+use diffsol::{
+    FaerLU, FaerMat, OdeBuilder, OdeEquations, OdeSolverMethod, OdeSolverStopReason, Vector,
+};
+use greenwood::CrackLaw;
+
+/// The fiducial eps = 0.01 of Section 2.6 (start at beta = (1 + eps) k, end at (1 - eps)/k).
+pub const EPS: f64 = 0.01;
+
+/// Which stiff integrator of diffsol to use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Method {
+    /// Variable-order BDF (NDF) method.
+    #[default]
+    Bdf,
+    /// ESDIRK34 singly-diagonally-implicit Runge-Kutta method.
+    Esdirk34,
+}
+
+/// Numerical settings of a collision integration (all dimensionless).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolverOptions {
+    /// Integrator.
+    pub method: Method,
+    /// Relative tolerance of the state.
+    pub rtol: f64,
+    /// Absolute tolerance of the nondimensional state.
+    pub atol: f64,
+    /// Step budget; exceeding it is an [`DynamicsError::Undecided`] error, never a silent answer.
+    pub max_steps: usize,
+    /// Full oscillations in contact after which the collision is declared sticking (>= 1).
+    pub max_oscillations: usize,
+    /// Margin below the end-state energy bound, relative to `max(1, initial energy)` in units of E0.
+    pub energy_margin: f64,
+    /// Record the trajectory at every solver step.
+    pub record_trajectory: bool,
+}
+
+impl Default for SolverOptions {
+    fn default() -> Self {
+        Self {
+            method: Method::Bdf,
+            rtol: 1e-9,
+            atol: 1e-12,
+            max_steps: 2_000_000,
+            max_oscillations: 2,
+            energy_margin: 1e-4,
+            record_trajectory: false,
+        }
+    }
+}
+
+/// Outcome of one collision (Section 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Outcome {
+    /// The contact never ends (e = 0).
+    Sticking,
+    /// The contact ends with `delta_dot > 0`: the spheres meet again at once (e < 0 computed).
+    DoubleCollision,
+    /// The contact ends with `delta_dot < 0`: the spheres fly apart (0 < e < 1).
+    Bouncing,
+}
+
+impl Outcome {
+    /// `sticking`, `double` or `bouncing`.
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            Outcome::Sticking => "sticking",
+            Outcome::DoubleCollision => "double",
+            Outcome::Bouncing => "bouncing",
+        }
+    }
+}
+
+/// How a sticking outcome was decided.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum StickingCriterion {
+    /// The energy fell below the end-of-contact bound (rigorous).
+    EnergyBound,
+    /// The contact completed the allowed number of oscillations.
+    Oscillations,
+}
+
+/// One recorded state (SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TrajectoryPoint {
+    /// Time since first contact (s).
+    pub t: f64,
+    /// Contact radius a (m).
+    pub a: f64,
+    /// Mutual approach delta (m).
+    pub delta: f64,
+    /// Approach speed delta_dot (m/s).
+    pub delta_dot: f64,
+    /// Total energy (J).
+    pub energy: f64,
+}
+
+/// Result of one collision (SI).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Collision {
+    /// Outcome.
+    pub outcome: Outcome,
+    /// Coefficient of restitution `e = -V_out/V_in` (0 for sticking; negative for double collisions).
+    pub e: f64,
+    /// Approach speed at the end of contact V_out (m/s; 0 for sticking).
+    pub v_out: f64,
+    /// Duration of the contact (s); `None` for sticking.
+    pub contact_time: Option<f64>,
+    /// How sticking was decided; `None` otherwise.
+    pub sticking_criterion: Option<StickingCriterion>,
+    /// Time at which the outcome was decided (s).
+    pub decided_at: f64,
+    /// Largest increase of the total energy between consecutive steps (J): an integration error
+    /// diagnostic, since the exact energy never increases.
+    pub max_energy_increase: f64,
+    /// Solver steps taken.
+    pub steps: usize,
+    /// Trajectory, when [`SolverOptions::record_trajectory`] is set.
+    pub trajectory: Vec<TrajectoryPoint>,
+}
+
+/// Integrates collisions of one contact at one relaxation time.
+#[derive(Debug, Clone)]
+pub struct Collider<'a> {
+    contact: Contact,
+    law: &'a CrackLaw,
+    t_vis: f64,
+    eps: f64,
+    scales: Scales,
+    params: Params,
+    beta_end: f64,
+    energy_bound: f64,
+    options: SolverOptions,
+}
+
+fn out_of_range(
+    field: &'static str,
+    value: f64,
+    allowed: &'static str,
+    unit: &'static str,
+) -> DynamicsError {
+    DynamicsError::OutOfRange {
+        field,
+        value,
+        allowed,
+        unit,
+    }
+}
+
+impl<'a> Collider<'a> {
+    /// Collisions of `contact` with the crack law `law` (its k) and relaxation time `t_vis`
+    /// (s, finite, > 0; the limit T_vis -> 0 is JKR theory, see `contact::Contact::v_stick_jkr`).
+    pub fn new(contact: Contact, law: &'a CrackLaw, t_vis: f64) -> Result<Self, DynamicsError> {
+        if !(t_vis.is_finite() && t_vis > 0.0) {
+            return Err(out_of_range(
+                "t_vis",
+                t_vis,
+                "0 < t_vis < infinity (T_vis -> 0 is the JKR limit: use V_stick,JKR)",
+                "s",
+            ));
+        }
+        let scales = Scales::new(&contact);
+        let params = scales.params(&contact, t_vis);
+        let mut c = Self {
+            contact,
+            law,
+            t_vis,
+            eps: EPS,
+            scales,
+            params,
+            beta_end: 0.0,
+            energy_bound: 0.0,
+            options: SolverOptions::default(),
+        };
+        c.set_eps(EPS)?;
+        Ok(c)
+    }
+
+    fn set_eps(&mut self, eps: f64) -> Result<(), DynamicsError> {
+        let k = self.law.k();
+        if !(eps.is_finite() && eps > 0.0 && eps < 1.0 && (1.0 + eps) * k < (1.0 - eps) / k) {
+            return Err(out_of_range(
+                "eps",
+                eps,
+                "0 < eps < 1 with (1 + eps) k < (1 - eps)/k",
+                "dimensionless",
+            ));
+        }
+        self.eps = eps;
+        self.beta_end = (1.0 - eps) / k;
+        self.energy_bound = model::end_energy_bound(self.beta_end);
+        Ok(())
+    }
+
+    /// The same collider with another eps (start at beta = (1 + eps) k, end at (1 - eps)/k).
+    pub fn with_eps(mut self, eps: f64) -> Result<Self, DynamicsError> {
+        self.set_eps(eps)?;
+        Ok(self)
+    }
+
+    /// The same collider with other solver settings.
+    pub fn with_options(mut self, options: SolverOptions) -> Result<Self, DynamicsError> {
+        if !(options.rtol.is_finite() && options.rtol > 0.0 && options.rtol < 1.0) {
+            return Err(out_of_range("rtol", options.rtol, "0 < rtol < 1", "dimensionless"));
+        }
+        if !(options.atol.is_finite() && options.atol > 0.0) {
+            return Err(out_of_range("atol", options.atol, "> 0", "dimensionless"));
+        }
+        if options.max_oscillations == 0 {
+            return Err(out_of_range(
+                "max_oscillations",
+                0.0,
+                ">= 1",
+                "dimensionless",
+            ));
+        }
+        self.options = options;
+        Ok(self)
+    }
+
+    /// The contact (SI).
+    pub fn contact(&self) -> &Contact {
+        &self.contact
+    }
+
+    /// The crack law (its k).
+    pub fn law(&self) -> &CrackLaw {
+        self.law
+    }
+
+    /// Relaxation time T_vis (s).
+    pub fn t_vis(&self) -> f64 {
+        self.t_vis
+    }
+
+    /// The nondimensional units.
+    pub fn scales(&self) -> &Scales {
+        &self.scales
+    }
+
+    /// The nondimensional parameters.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// Solver settings.
+    pub fn options(&self) -> &SolverOptions {
+        &self.options
+    }
+
+    /// beta at which the contact ends, (1 - eps)/k (dimensionless).
+    pub fn beta_end(&self) -> f64 {
+        self.beta_end
+    }
+
+    /// Smallest energy any end-of-contact state can have (J).
+    pub fn end_energy_bound(&self) -> f64 {
+        self.energy_bound * self.scales.e0
+    }
+
+    /// Nondimensional initial state for impact speed `v_in` (m/s).
+    fn initial_state(&self, v_in: f64) -> [f64; NSTATES] {
+        let x0 = self.contact.initial_contact_radius(self.law.k(), self.eps) / self.scales.a_eq;
+        [x0, 0.0, v_in / self.scales.v0, 0.0]
+    }
+
+    /// Integrates one collision at impact speed `v_in` (m/s, finite, > 0).
+    pub fn collide(&self, v_in: f64) -> Result<Collision, DynamicsError> {
+        if !(v_in.is_finite() && v_in > 0.0) {
+            return Err(out_of_range("v_in", v_in, "> 0 and finite", "m/s"));
+        }
+        let u0 = self.initial_state(v_in);
+        let params = self.params;
+        let law = self.law;
+        let beta_end = self.beta_end;
+        let opts = &self.options;
+        let problem = OdeBuilder::<FaerMat<f64>>::new()
+            .rtol(opts.rtol)
+            .atol([opts.atol; NSTATES])
+            .h0(1e-6)
+            .rhs_implicit(
+                move |u: &[f64], _p: &[f64], _s: f64, out: &mut [f64]| {
+                    model::rhs(&params, law, u, out)
+                },
+                move |u: &[f64], _p: &[f64], _s: f64, w: &[f64], out: &mut [f64]| {
+                    model::jac_mul(&params, law, u, w, out)
+                },
+            )
+            .init(
+                move |_p: &[f64], _s: f64, y: &mut [f64]| y.copy_from_slice(&u0),
+                NSTATES,
+            )
+            .root(
+                move |u: &[f64], _p: &[f64], _s: f64, out: &mut [f64]| {
+                    out[0] = model::beta(u[0], u[1]) - beta_end
+                },
+                1,
+            )
+            .build()
+            .map_err(|e| self.solver_error(v_in, e))?;
+        match opts.method {
+            Method::Bdf => {
+                let mut solver = problem
+                    .bdf::<FaerLU<f64>>()
+                    .map_err(|e| self.solver_error(v_in, e))?;
+                self.run(&mut solver, v_in)
+            }
+            Method::Esdirk34 => {
+                let mut solver = problem
+                    .esdirk34::<FaerLU<f64>>()
+                    .map_err(|e| self.solver_error(v_in, e))?;
+                self.run(&mut solver, v_in)
+            }
+        }
+    }
+
+    fn solver_error(&self, v_in: f64, e: impl std::fmt::Display) -> DynamicsError {
+        DynamicsError::Solver {
+            r1: self.contact.r1(),
+            t_vis: self.t_vis,
+            v_in,
+            message: e.to_string(),
+        }
+    }
+
+    fn point(&self, u: &[f64; NSTATES]) -> TrajectoryPoint {
+        let s = &self.scales;
+        TrajectoryPoint {
+            t: u[3] * s.t0,
+            a: u[0] * s.a_eq,
+            delta: u[1] * s.delta_eq,
+            delta_dot: u[2] * s.v0,
+            energy: model::energy(u[0], u[1], u[2]) * s.e0,
+        }
+    }
+
+    fn run<'s, Eqn, S>(&self, solver: &mut S, v_in: f64) -> Result<Collision, DynamicsError>
+    where
+        Eqn: OdeEquations<T = f64> + 's,
+        S: OdeSolverMethod<'s, Eqn>,
+    {
+        let opts = &self.options;
+        let read = |v: &Eqn::V| -> [f64; NSTATES] {
+            [v.get_index(0), v.get_index(1), v.get_index(2), v.get_index(3)]
+        };
+        let mut u = read(solver.state().y);
+        let e_initial = model::energy(u[0], u[1], u[2]);
+        let threshold = self.energy_bound - opts.energy_margin * e_initial.abs().max(1.0);
+        let mut e_prev = e_initial;
+        let mut max_increase: f64 = 0.0;
+        let mut maxima = 0usize;
+        let mut p_prev = u[2];
+        let mut trajectory = Vec::new();
+        if opts.record_trajectory {
+            trajectory.push(self.point(&u));
+        }
+        for step in 1..=opts.max_steps {
+            let reason = solver.step().map_err(|e| self.solver_error(v_in, e))?;
+            if let OdeSolverStopReason::RootFound(s_root, _) = reason {
+                let y = solver
+                    .interpolate(s_root)
+                    .map_err(|e| self.solver_error(v_in, e))?;
+                let end = read(&y);
+                let e_end = model::energy(end[0], end[1], end[2]);
+                max_increase = max_increase.max(e_end - e_prev);
+                let end_point = self.point(&end);
+                if opts.record_trajectory {
+                    trajectory.push(end_point);
+                }
+                let v_out = end_point.delta_dot;
+                let outcome = if v_out > 0.0 {
+                    Outcome::DoubleCollision
+                } else {
+                    Outcome::Bouncing
+                };
+                return Ok(Collision {
+                    outcome,
+                    e: -v_out / v_in,
+                    v_out,
+                    contact_time: Some(end_point.t),
+                    sticking_criterion: None,
+                    decided_at: end_point.t,
+                    max_energy_increase: max_increase * self.scales.e0,
+                    steps: step,
+                    trajectory,
+                });
+            }
+            u = read(solver.state().y);
+            let energy = model::energy(u[0], u[1], u[2]);
+            max_increase = max_increase.max(energy - e_prev);
+            e_prev = energy;
+            if opts.record_trajectory {
+                trajectory.push(self.point(&u));
+            }
+            if p_prev > 0.0 && u[2] <= 0.0 {
+                maxima += 1;
+            }
+            p_prev = u[2];
+            let criterion = if energy < threshold {
+                Some(StickingCriterion::EnergyBound)
+            } else if maxima > opts.max_oscillations {
+                Some(StickingCriterion::Oscillations)
+            } else {
+                None
+            };
+            if let Some(criterion) = criterion {
+                return Ok(Collision {
+                    outcome: Outcome::Sticking,
+                    e: 0.0,
+                    v_out: 0.0,
+                    contact_time: None,
+                    sticking_criterion: Some(criterion),
+                    decided_at: u[3] * self.scales.t0,
+                    max_energy_increase: max_increase * self.scales.e0,
+                    steps: step,
+                    trajectory,
+                });
+            }
+        }
+        Err(DynamicsError::Undecided {
+            r1: self.contact.r1(),
+            t_vis: self.t_vis,
+            v_in,
+            steps: opts.max_steps,
+        })
+    }
+}
