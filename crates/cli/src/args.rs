@@ -11,19 +11,19 @@ pub struct MaterialArgs {
     #[arg(long, default_value = "co2")]
     pub material: String,
     /// Particle radius R1 in metres (each of the two identical spheres).
-    #[arg(long, default_value_t = 60e-6, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 60e-6, allow_hyphen_values = true)]
     pub radius: f64,
     /// Override the surface free energy gamma_SV (J/m^2); the work of adhesion is 2 gamma_SV.
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub gamma_sv: Option<f64>,
     /// Override Young's modulus E (Pa).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub young: Option<f64>,
     /// Override the Poisson ratio nu (dimensionless, -1 < nu < 0.5).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub poisson: Option<f64>,
     /// Override the density rho (kg/m^3).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub density: Option<f64>,
 }
 

@@ -1,8 +1,10 @@
 //! Errors at the CLI edge: one line each, naming the flag, the value and the allowed range.
 
 use contact::ContactError;
+use dynamics::DynamicsError;
 use greenwood::GreenwoodError;
 use std::process::ExitCode;
+use thresholds::ThresholdsError;
 
 /// A failure of a `stickiness` command.
 #[derive(Debug, thiserror::Error)]
@@ -33,6 +35,12 @@ pub fn flag_of(field: &str) -> String {
         "poisson" => "--poisson".into(),
         "density" => "--density".into(),
         "radius" => "--radius".into(),
+        "t_vis" => "--t-vis".into(),
+        "v_in" => "--v-in".into(),
+        "v_stick" => "--v-stick".into(),
+        "v_stick_err" => "--v-stick-err".into(),
+        "v_max" => "--v-max".into(),
+        "rel_tol" => "--rel-tol".into(),
         other => format!("--{}", other.replace('_', "-")),
     }
 }
@@ -63,6 +71,44 @@ impl From<GreenwoodError> for CliError {
             GreenwoodError::BetaOutOfRange { beta, min, max, .. } => CliError::Usage(format!(
                 "--beta = {beta} is outside the allowed range {min} < beta < {max} (k < beta < 1/k)"
             )),
+            other => CliError::Compute(other.to_string()),
+        }
+    }
+}
+
+fn out_of_range(field: &str, value: f64, allowed: &str, unit: &str) -> CliError {
+    CliError::Usage(format!(
+        "{} = {value} is outside the allowed range {allowed} ({unit})",
+        flag_of(field)
+    ))
+}
+
+impl From<DynamicsError> for CliError {
+    fn from(e: DynamicsError) -> Self {
+        match e {
+            DynamicsError::Contact(c) => c.into(),
+            DynamicsError::Greenwood(g) => g.into(),
+            DynamicsError::OutOfRange {
+                field,
+                value,
+                allowed,
+                unit,
+            } => out_of_range(field, value, allowed, unit),
+            other => CliError::Compute(other.to_string()),
+        }
+    }
+}
+
+impl From<ThresholdsError> for CliError {
+    fn from(e: ThresholdsError) -> Self {
+        match e {
+            ThresholdsError::Dynamics(d) => d.into(),
+            ThresholdsError::OutOfRange {
+                field,
+                value,
+                allowed,
+                unit,
+            } => out_of_range(field, value, allowed, unit),
             other => CliError::Compute(other.to_string()),
         }
     }

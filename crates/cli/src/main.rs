@@ -30,6 +30,14 @@ enum Command {
     CrackLaw(commands::crack_law::CrackLawArgs),
     /// JKR equilibrium, pull-off force, sticking energy and V_stick,JKR.
     Jkr(commands::jkr::JkrArgs),
+    /// One head-on collision: outcome, coefficient of restitution, contact time.
+    Collide(commands::collide::CollideArgs),
+    /// Threshold velocity for sticking V_stick and the onset of double collisions.
+    VStick(commands::v_stick::VStickArgs),
+    /// The relaxation time T_vis that reproduces a measured V_stick.
+    FitTVis(commands::fit_t_vis::FitTVisArgs),
+    /// Fragmentation velocity of aggregates V_frag = 10 V_stick.
+    VFrag(commands::v_frag::VFragArgs),
 }
 
 fn main() -> ExitCode {
@@ -37,6 +45,10 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::CrackLaw(a) => commands::crack_law::run(a),
         Command::Jkr(a) => commands::jkr::run(a),
+        Command::Collide(a) => commands::collide::run(a),
+        Command::VStick(a) => commands::v_stick::run(a),
+        Command::FitTVis(a) => commands::fit_t_vis::run(a),
+        Command::VFrag(a) => commands::v_frag::run(a),
     };
     match result {
         Ok(report) => {

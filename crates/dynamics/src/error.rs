@@ -25,7 +25,7 @@ pub enum DynamicsError {
         unit: &'static str,
     },
     /// The ODE solver failed.
-    #[error("ODE solver failed at R1 = {r1} m, T_vis = {t_vis} s, V_in = {v_in} m/s: {message}")]
+    #[error("ODE solver failed at R1 = {r1} m, T_vis = {t_vis} s, V_in = {v_in} m/s, after t = {t} s with a = {a} m, delta = {delta} m, delta_dot = {delta_dot} m/s, beta = {beta}: {message}")]
     Solver {
         /// Particle radius (m).
         r1: f64,
@@ -33,6 +33,16 @@ pub enum DynamicsError {
         t_vis: f64,
         /// Impact speed (m/s).
         v_in: f64,
+        /// Time of the last accepted step (s).
+        t: f64,
+        /// Contact radius at the last accepted step (m).
+        a: f64,
+        /// Mutual approach at the last accepted step (m).
+        delta: f64,
+        /// Approach speed at the last accepted step (m/s).
+        delta_dot: f64,
+        /// beta at the last accepted step.
+        beta: f64,
         /// The solver's message.
         message: String,
     },

@@ -9,10 +9,10 @@ use serde_json::Value;
 #[derive(Debug, Args)]
 pub struct CrackLawArgs {
     /// Ratio of relaxed to instantaneous modulus k (dimensionless, 0 < k < 1).
-    #[arg(long, default_value_t = 0.01, allow_negative_numbers = true)]
+    #[arg(long, default_value_t = 0.01, allow_hyphen_values = true)]
     pub k: f64,
     /// Normalized apparent surface energy beta = G_eff/gamma (dimensionless, k < beta < 1/k).
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub beta: f64,
 }
 

@@ -1,0 +1,185 @@
+//! The collision commands as a user runs them: JSON contract, files, bad input.
+
+use std::process::Command;
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_stickiness"))
+        .args(args)
+        .output()
+        .expect("binary runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn json(args: &[&str]) -> serde_json::Value {
+    let (code, out, err) = run(args);
+    assert_eq!(code, 0, "{args:?}: {err}");
+    serde_json::from_str(&out).expect("one JSON object")
+}
+
+/// Section 4: 3.5, 4.05 and 4.5 cm/s stick, double-collide and bounce (CO2, 60 um, 1e-9 s).
+#[test]
+fn collide_outcomes_and_keys() {
+    for (v, outcome) in [
+        ("0.035", "sticking"),
+        ("0.0405", "double"),
+        ("0.045", "bouncing"),
+    ] {
+        let j = json(&[
+            "collide",
+            "--material",
+            "co2",
+            "--radius",
+            "60e-6",
+            "--t-vis",
+            "1e-9",
+            "--v-in",
+            v,
+            "--json",
+        ]);
+        assert_eq!(j["outcome"], outcome);
+        for key in ["e", "v_out", "contact_time"] {
+            assert!(j.get(key).is_some(), "missing {key}");
+        }
+    }
+}
+
+#[test]
+fn collide_writes_a_trajectory_csv() {
+    let dir = std::env::temp_dir().join(format!("stickiness-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("traj.csv");
+    let p = path.to_str().unwrap();
+    json(&[
+        "collide",
+        "--t-vis",
+        "1e-9",
+        "--v-in",
+        "0.045",
+        "--trajectory",
+        p,
+        "--json",
+    ]);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    assert_eq!(lines.next(), Some("t,a,delta,delta_dot,energy"));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert!(rows.len() > 10);
+    assert_eq!(rows[0][2], 0.0); // delta = 0 at first contact (Section 2.6)
+    assert_eq!(rows[0][3], 0.045); // delta_dot = V_in
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// Section 4.4: V_stick = 4.14 cm/s (first bouncing V_in on the paper's 0.01 cm/s grid).
+#[test]
+fn v_stick_keys() {
+    let j = json(&[
+        "v-stick",
+        "--material",
+        "co2",
+        "--radius",
+        "60e-6",
+        "--t-vis",
+        "1e-9",
+        "--json",
+    ]);
+    let vs = j["v_stick"].as_f64().unwrap();
+    assert!(vs > 0.0413 && vs <= 0.0414);
+    assert!(j["v_double_onset"].as_f64().unwrap() < vs);
+    assert!(j["v_stick_jkr"].as_f64().unwrap() < vs);
+}
+
+#[test]
+fn v_stick_without_bouncing_says_so() {
+    let j = json(&["v-stick", "--t-vis", "1e-6", "--v-max", "2", "--json"]);
+    assert!(j["v_stick"].is_null());
+    assert_eq!(j["no_bouncing_below"].as_f64(), Some(2.0));
+}
+
+/// Section 5.1: 0.04 ± 0.02 m/s gives 8.5e-11 <= T_vis <= 1.97e-9 s.
+#[test]
+fn fit_t_vis_keys() {
+    let j = json(&[
+        "fit-t-vis",
+        "--material",
+        "co2",
+        "--radius",
+        "60e-6",
+        "--v-stick",
+        "0.04",
+        "--v-stick-err",
+        "0.02",
+        "--json",
+    ]);
+    let (lo, hi) = (
+        j["t_vis_min"].as_f64().unwrap(),
+        j["t_vis_max"].as_f64().unwrap(),
+    );
+    assert!(
+        lo > 8.4e-11 && lo <= 8.5e-11 && (1.97e-9..1.98e-9).contains(&hi),
+        "{j}"
+    );
+    let t = j["t_vis"].as_f64().unwrap();
+    assert!(lo < t && t < hi);
+}
+
+/// Section 7.1: V_frag,JKR(30 um) = 0.296 m/s; Section 5.3 laws give T_vis.
+#[test]
+fn v_frag_keys() {
+    let j = json(&["v-frag", "--material", "co2", "--radius", "30e-6", "--json"]);
+    assert!((j["v_frag"].as_f64().unwrap() / 0.296 - 1.0).abs() < 0.002);
+    assert_eq!(j["t_vis"].as_f64(), Some(0.0));
+    let j = json(&[
+        "v-frag",
+        "--material",
+        "h2o",
+        "--radius",
+        "90e-6",
+        "--t-vis-law",
+        "h2o",
+        "--json",
+    ]);
+    assert!((j["t_vis"].as_f64().unwrap() / 9.4e-9 - 1.0).abs() < 0.005);
+    let (vf, vs) = (
+        j["v_frag"].as_f64().unwrap(),
+        j["v_stick"].as_f64().unwrap(),
+    );
+    assert!((vf - 10.0 * vs).abs() < 1e-12 * vf);
+}
+
+#[test]
+fn bad_collision_input() {
+    for (args, flag) in [
+        (vec!["collide", "--t-vis", "1e-9", "--v-in", "-1"], "--v-in"),
+        (
+            vec!["collide", "--t-vis", "-1e-9", "--v-in", "1"],
+            "--t-vis",
+        ),
+        (
+            vec!["collide", "--t-vis", "1e-9", "--v-in", "1", "--k", "0"],
+            "--k",
+        ),
+        (vec!["v-stick", "--t-vis", "-1"], "--t-vis"),
+        (vec!["fit-t-vis", "--v-stick", "0"], "--v-stick"),
+        (
+            vec!["fit-t-vis", "--v-stick", "0.04", "--v-stick-err", "0.05"],
+            "--v-stick-err",
+        ),
+    ] {
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty());
+        assert!(
+            err.contains(flag) && err.contains("allowed range"),
+            "{args:?}: {err}"
+        );
+    }
+    let (code, _, err) = run(&["collide", "--t-vis", "0", "--v-in", "1"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("JKR"), "{err}");
+}

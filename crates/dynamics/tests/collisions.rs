@@ -1,0 +1,258 @@
+//! Collisions of two identical spheres (Arakawa & Krijt 2021, Sections 2.5-2.6 and 4).
+
+use contact::{Contact, Material};
+use dynamics::model::{self, end_energy_bound, Params};
+use dynamics::{Collider, DynamicsError, Method, Outcome, SolverOptions, StickingCriterion};
+use greenwood::CrackLaw;
+
+fn co2_60um() -> Contact {
+    Contact::new(Material::co2(), 60e-6).unwrap()
+}
+
+fn law() -> CrackLaw {
+    CrackLaw::new(0.01).unwrap()
+}
+
+/// Section 4 / Figure 2: CO2, R1 = 60 um, T_vis = 1e-9 s: V_in = 3.5, 4.05, 4.5 cm/s give
+/// sticking, a double collision and bouncing.
+#[test]
+fn section_4_three_outcomes() {
+    let law = law();
+    let col = Collider::new(co2_60um(), &law, 1e-9).unwrap();
+    let stick = col.collide(0.035).unwrap();
+    assert_eq!(stick.outcome, Outcome::Sticking);
+    assert_eq!((stick.e, stick.v_out, stick.contact_time), (0.0, 0.0, None));
+    let double = col.collide(0.0405).unwrap();
+    assert_eq!(double.outcome, Outcome::DoubleCollision);
+    assert!(double.e < 0.0 && double.v_out > 0.0);
+    let bounce = col.collide(0.045).unwrap();
+    assert_eq!(bounce.outcome, Outcome::Bouncing);
+    assert!(bounce.e > 0.0 && bounce.e < 1.0 && bounce.v_out < 0.0);
+    assert!(bounce.contact_time.unwrap() > 0.0);
+}
+
+/// The nondimensional right-hand side is Section 2's physics: delta_ddot = -(F_E + F_D)/m* and
+/// a_dot = v(k, beta) E* gamma / (sigma0^2 T_vis), evaluated in SI with the contact crate.
+#[test]
+fn nondimensional_rhs_is_the_physical_model() {
+    let law = law();
+    let c = co2_60um();
+    let t_vis = 1e-9;
+    let col = Collider::new(c, &law, t_vis).unwrap();
+    let s = *col.scales();
+    let params = Params {
+        speed_cap: f64::INFINITY, // plain time: g = 1
+        ..*col.params()
+    };
+    for (a, delta, delta_dot) in [
+        (0.5e-6, 2e-9, 0.01),
+        (0.8e-6, -3e-9, -0.02),
+        (0.3e-6, 1e-9, 0.03),
+    ] {
+        let u = [a / s.a_eq, delta / s.delta_eq, delta_dot / s.v0, 0.0];
+        let mut f = [0.0; 4];
+        model::rhs(&params, &law, &u, &mut f);
+        let acc = -(c.f_e(a, delta) + c.f_d(a, delta_dot, t_vis)) / c.m_star();
+        let a_dot = law.v(c.beta(a, delta)).unwrap() * c.crack_speed_unit(t_vis);
+        assert!((f[2] * s.v0 / s.t0 - acc).abs() < 1e-12 * acc.abs());
+        assert!((f[0] * s.a_eq / s.t0 - a_dot).abs() < 1e-12 * a_dot.abs());
+        assert!((f[1] * s.delta_eq / s.t0 - delta_dot).abs() < 1e-12 * delta_dot.abs());
+        assert_eq!(f[3], 1.0);
+        let e = model::energy(u[0], u[1], u[2]) * s.e0;
+        assert!(
+            (e - c.total_energy(a, delta, delta_dot)).abs() < 1e-12 * e.abs().max(c.e_stick_jkr())
+        );
+        assert!((model::beta(u[0], u[1]) - c.beta(a, delta)).abs() < 1e-12);
+    }
+}
+
+/// The analytic Jacobian agrees with central differences of the right-hand side.
+#[test]
+fn jacobian_matches_finite_differences() {
+    let law = law();
+    for lambda in [1.3, 1.3e5] {
+        let p = Params {
+            lambda,
+            c_d: 0.05,
+            speed_cap: model::SPEED_CAP,
+        };
+        for u in [
+            [0.7, 0.2, 0.3, 1.0],
+            [0.3, -0.5, -0.2, 1.0],
+            [1.04, 1.2, -1.1, 4.4],
+            [0.2, 0.0, 2.0, 0.0],
+        ] {
+            for j in 0..4 {
+                let h = 1e-6 * (1.0 + f64::abs(u[j]));
+                let (mut up, mut um) = (u, u);
+                up[j] += h;
+                um[j] -= h;
+                let (mut fp, mut fm, mut jw, mut w) = ([0.0; 4], [0.0; 4], [0.0; 4], [0.0; 4]);
+                model::rhs(&p, &law, &up, &mut fp);
+                model::rhs(&p, &law, &um, &mut fm);
+                w[j] = 1.0;
+                model::jac_mul(&p, &law, &u, &w, &mut jw);
+                for i in 0..4 {
+                    let fd = (fp[i] - fm[i]) / (2.0 * h);
+                    let scale = 1e-3 * (1.0 + fd.abs().max(jw[i].abs()));
+                    assert!(
+                        (fd - jw[i]).abs() < scale,
+                        "lambda {lambda} u {u:?} J[{i}][{j}]: {fd} vs {}",
+                        jw[i]
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// The end-state energy bound: brute-force minimum of U_E - pi a^2 gamma over states with
+/// beta = beta_end (both branches y = 3x^2 ± 2 sqrt(beta_end x)) against the closed form.
+#[test]
+fn end_energy_bound_matches_brute_force() {
+    for beta_end in [99.0, 49.5, 5.0, 3.0, 2.5, 1.5, 1.1] {
+        let mut brute = f64::INFINITY;
+        for i in 1..200_000 {
+            let x = i as f64 * 1e-5;
+            for sign in [-1.0, 1.0] {
+                let y = 3.0 * x * x + sign * 2.0 * (beta_end * x).sqrt();
+                brute = brute.min(model::energy(x, y, 0.0));
+            }
+        }
+        let bound = end_energy_bound(beta_end);
+        if beta_end >= 3.0 {
+            assert_eq!(bound, 0.0);
+            assert!(brute > -1e-9, "{beta_end}: {brute}");
+        } else {
+            assert!(bound < 0.0);
+            assert!(
+                (bound - brute).abs() < 1e-6 * brute.abs(),
+                "{beta_end}: {bound} vs {brute}"
+            );
+        }
+    }
+}
+
+/// The total energy never increases along a trajectory (beyond the integration tolerance):
+/// F_D dissipates and v(k, beta) has the sign of 1 - beta (Sections 2.3-2.5).
+#[test]
+fn energy_never_increases() {
+    let law = law();
+    for t_vis in [1e-9, 1e-11, 1e-14] {
+        let col = Collider::new(co2_60um(), &law, t_vis).unwrap();
+        for v_in in [0.03, 0.0405, 0.1, 1.0] {
+            let r = col.collide(v_in).unwrap();
+            let e_in = 0.5 * col.contact().m_star() * v_in * v_in;
+            assert!(
+                r.max_energy_increase <= 1e-8 * e_in,
+                "T_vis {t_vis}, V_in {v_in}: {:e} of {:e}",
+                r.max_energy_increase,
+                e_in
+            );
+        }
+    }
+}
+
+/// BDF and ESDIRK34 agree, and e moves by less than 1e-7 relative when the tolerance is
+/// tightened tenfold.
+#[test]
+fn solvers_agree_and_converge() {
+    let law = law();
+    for t_vis in [1e-9, 1e-13] {
+        for v_in in [0.045, 0.2] {
+            let e = |method: Method, rtol: f64| {
+                let opts = SolverOptions {
+                    method,
+                    rtol,
+                    atol: 1e-3 * rtol,
+                    ..Default::default()
+                };
+                Collider::new(co2_60um(), &law, t_vis)
+                    .unwrap()
+                    .with_options(opts)
+                    .unwrap()
+                    .collide(v_in)
+                    .unwrap()
+                    .e
+            };
+            let base = e(Method::Bdf, 1e-9);
+            let tight = e(Method::Bdf, 1e-10);
+            let esdirk = e(Method::Esdirk34, 1e-9);
+            assert!(
+                ((tight - base) / base).abs() < 1e-7,
+                "T_vis {t_vis} V {v_in}: {base} vs {tight}"
+            );
+            assert!(
+                ((esdirk - base) / base).abs() < 1e-6,
+                "T_vis {t_vis} V {v_in}: {base} vs {esdirk}"
+            );
+        }
+    }
+}
+
+/// Sticking is proved by the energy bound when damping is strong; for weak damping the
+/// oscillation criterion decides.
+#[test]
+fn sticking_criteria() {
+    let law = law();
+    let strong = Collider::new(co2_60um(), &law, 1e-9)
+        .unwrap()
+        .collide(0.03)
+        .unwrap();
+    assert_eq!(
+        strong.sticking_criterion,
+        Some(StickingCriterion::EnergyBound)
+    );
+    let weak = Collider::new(co2_60um(), &law, 1e-14)
+        .unwrap()
+        .collide(0.0165)
+        .unwrap();
+    assert_eq!(weak.outcome, Outcome::Sticking);
+    assert_eq!(
+        weak.sticking_criterion,
+        Some(StickingCriterion::Oscillations)
+    );
+}
+
+/// Section 2.6: the trajectory starts at delta = 0, delta_dot = V_in, beta = (1 + eps) k and a
+/// bouncing one ends at beta = (1 - eps)/k.
+#[test]
+fn trajectory_initial_and_final_states() {
+    let law = law();
+    let c = co2_60um();
+    let opts = SolverOptions {
+        record_trajectory: true,
+        ..Default::default()
+    };
+    let r = Collider::new(c, &law, 1e-9)
+        .unwrap()
+        .with_options(opts)
+        .unwrap()
+        .collide(0.045)
+        .unwrap();
+    let first = r.trajectory[0];
+    assert_eq!((first.t, first.delta, first.delta_dot), (0.0, 0.0, 0.045));
+    assert!((c.beta(first.a, 0.0) / (1.01 * 0.01) - 1.0).abs() < 1e-12);
+    let last = *r.trajectory.last().unwrap();
+    assert!((c.beta(last.a, last.delta) / 99.0 - 1.0).abs() < 1e-6);
+    assert_eq!(Some(last.t), r.contact_time);
+    assert_eq!(last.delta_dot, r.v_out);
+}
+
+#[test]
+fn bad_inputs_are_typed_errors() {
+    let law = law();
+    let err = Collider::new(co2_60um(), &law, 0.0).unwrap_err();
+    assert!(matches!(
+        err,
+        DynamicsError::OutOfRange { field: "t_vis", .. }
+    ));
+    assert!(err.to_string().contains("JKR"));
+    let col = Collider::new(co2_60um(), &law, 1e-9).unwrap();
+    for v in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+        assert!(matches!(
+            col.collide(v),
+            Err(DynamicsError::OutOfRange { field: "v_in", .. })
+        ));
+    }
+}
