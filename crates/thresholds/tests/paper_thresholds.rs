@@ -81,8 +81,12 @@ fn section_5_1_fit_co2() {
 #[test]
 fn section_5_2_h2o_fit() {
     let opts = SearchOptions::default();
-    let a = fit_t_vis(&h2o(0.19), &law(), 0.73, 0.0, &opts).unwrap().t_vis;
-    let b = fit_t_vis(&h2o(0.02), &law(), 0.73, 0.0, &opts).unwrap().t_vis;
+    let a = fit_t_vis(&h2o(0.19), &law(), 0.73, 0.0, &opts)
+        .unwrap()
+        .t_vis;
+    let b = fit_t_vis(&h2o(0.02), &law(), 0.73, 0.0, &opts)
+        .unwrap()
+        .t_vis;
     assert!((5.25e-9..5.35e-9).contains(&a), "{a}");
     assert!((2.365e-8..2.375e-8).contains(&b), "{b}");
 }
