@@ -57,6 +57,9 @@ pub struct SolverOptions {
     pub energy_margin: f64,
     /// Record the trajectory at every solver step.
     pub record_trajectory: bool,
+    /// Apply the sticking criteria only after this time (s); a later decision shows more of a
+    /// sticking trajectory (Figure 2) and changes no outcome.
+    pub decide_after: f64,
 }
 
 impl Default for SolverOptions {
@@ -69,6 +72,7 @@ impl Default for SolverOptions {
             max_oscillations: 2,
             energy_margin: 1e-4,
             record_trajectory: false,
+            decide_after: 0.0,
         }
     }
 }
@@ -234,6 +238,14 @@ impl<'a> Collider<'a> {
         }
         if !(options.atol.is_finite() && options.atol > 0.0) {
             return Err(out_of_range("atol", options.atol, "> 0", "dimensionless"));
+        }
+        if !(options.decide_after.is_finite() && options.decide_after >= 0.0) {
+            return Err(out_of_range(
+                "decide_after",
+                options.decide_after,
+                ">= 0 and finite",
+                "s",
+            ));
         }
         if options.max_oscillations == 0 {
             return Err(out_of_range(
@@ -403,6 +415,7 @@ impl<'a> Collider<'a> {
         let mut max_increase: f64 = 0.0;
         let mut maxima = 0usize;
         let mut p_prev = u[2];
+        let decide_after = opts.decide_after / self.scales.t0;
         let mut trajectory = Vec::new();
         if opts.record_trajectory {
             trajectory.push(self.point(&u));
@@ -451,7 +464,9 @@ impl<'a> Collider<'a> {
                 maxima += 1;
             }
             p_prev = u[2];
-            let criterion = if energy < threshold {
+            let criterion = if u[3] < decide_after {
+                None
+            } else if energy < threshold {
                 Some(StickingCriterion::EnergyBound)
             } else if maxima > opts.max_oscillations {
                 Some(StickingCriterion::Oscillations)
