@@ -32,6 +32,7 @@
 pub mod error;
 pub mod integrals;
 pub mod law;
+mod quad;
 pub mod table;
 
 pub use error::GreenwoodError;

@@ -1,7 +1,9 @@
 //! [`CrackLaw`]: v(k, beta) and dv/dbeta by interpolation of a table built once per k.
 //!
 //! Each branch is tabulated at alpha nodes uniform in `ln alpha` (alpha from [`ALPHA_MIN`] to
-//! [`ALPHA_MAX`], step [`LN_ALPHA_STEP`]). In the coordinates
+//! [`ALPHA_MAX`], step [`LN_ALPHA_STEP`]). The integrals J3, 1 - J3 and K at the nodes do not
+//! depend on k: `build.rs` computes them once with the crate's quadrature, so building a
+//! `CrackLaw` is only algebra (a fraction of a millisecond). In the coordinates
 //! ```text
 //! zeta = ln|beta - 1| - ln(distance of beta to k or 1/k),      w = ln|v|
 //! ```
@@ -16,12 +18,11 @@ use crate::integrals::JIntegrals;
 use crate::law::{check_beta, check_k, zeta_of_beta, Branch, CrackPoint};
 use crate::GreenwoodError;
 
-/// Smallest tabulated alpha (dimensionless).
-pub const ALPHA_MIN: f64 = 1e-9;
-/// Largest tabulated alpha (dimensionless).
-pub const ALPHA_MAX: f64 = 1e11;
-/// Node spacing in `ln alpha`.
-pub const LN_ALPHA_STEP: f64 = 0.02;
+pub use crate::quad::{ALPHA_MAX, ALPHA_MIN, LN_ALPHA_STEP};
+
+// `J_NODES[i] = [J3, 1 - J3, K]` at `crate::quad::node_alpha(i)`, computed by `build.rs` with the
+// quadrature of `crate::quad` (the values do not depend on k).
+include!(concat!(env!("OUT_DIR"), "/j_nodes.rs"));
 /// Number of nodes in each interpolation stencil.
 pub const STENCIL: usize = 6;
 
@@ -104,15 +105,14 @@ pub struct CrackLaw {
 
 impl CrackLaw {
     /// Tabulates the crack law for the modulus ratio `k` (dimensionless, 0 < k < 1).
+    ///
+    /// Cost: a few thousand logarithms; the quadratures were done at build time.
     pub fn new(k: f64) -> Result<Self, GreenwoodError> {
         check_k(k)?;
-        let u_min = ALPHA_MIN.ln();
-        let nodes = ((ALPHA_MAX.ln() - u_min) / LN_ALPHA_STEP).ceil() as usize + 1;
-        let mut closing = Vec::with_capacity(nodes);
-        let mut opening = Vec::with_capacity(nodes);
-        for i in 0..nodes {
-            let alpha = (u_min + i as f64 * LN_ALPHA_STEP).exp();
-            let j = JIntegrals::new(alpha)?;
+        let mut closing = Vec::with_capacity(J_NODES.len());
+        let mut opening = Vec::with_capacity(J_NODES.len());
+        for (i, &[j3, one_minus_j3, k_log]) in J_NODES.iter().enumerate() {
+            let j = JIntegrals::from_parts(crate::quad::node_alpha(i), j3, one_minus_j3, k_log);
             for (branch, out) in [
                 (Branch::Closing, &mut closing),
                 (Branch::Opening, &mut opening),
@@ -205,6 +205,22 @@ impl CrackLaw {
                     dv_dbeta: v * dw * dzeta,
                 }
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::J_NODES;
+    use crate::quad::{j3_complement_log_term, node_alpha, node_count};
+
+    /// The build-time table holds exactly what the quadrature gives now.
+    #[test]
+    fn build_time_nodes_equal_the_quadrature() {
+        assert_eq!(J_NODES.len(), node_count());
+        for i in (0..J_NODES.len()).step_by(97) {
+            let (j3, m, k) = j3_complement_log_term(node_alpha(i));
+            assert_eq!(J_NODES[i], [j3, m, k], "node {i}");
         }
     }
 }
