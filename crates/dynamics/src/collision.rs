@@ -141,6 +141,9 @@ pub struct Collision {
     /// Largest increase of the total energy between consecutive steps (J): an integration error
     /// diagnostic, since the exact energy never increases.
     pub max_energy_increase: f64,
+    /// Largest beta reached at a solver step (dimensionless): for a sticking collision, how close the
+    /// contact came to its end at beta = (1 - eps)/k.
+    pub beta_max: f64,
     /// Solver steps taken.
     pub steps: usize,
     /// Trajectory, when [`SolverOptions::record_trajectory`] is set.
@@ -414,6 +417,7 @@ impl<'a> Collider<'a> {
         let mut e_prev = e_initial;
         let mut max_increase: f64 = 0.0;
         let mut maxima = 0usize;
+        let mut beta_max = model::beta(u[0], u[1]);
         let mut p_prev = u[2];
         let decide_after = opts.decide_after / self.scales.t0;
         let mut trajectory = Vec::new();
@@ -449,11 +453,13 @@ impl<'a> Collider<'a> {
                     sticking_criterion: None,
                     decided_at: end_point.t,
                     max_energy_increase: max_increase * self.scales.e0,
+                    beta_max: self.beta_end,
                     steps: step,
                     trajectory,
                 });
             }
             u = read(solver.state().y);
+            beta_max = beta_max.max(model::beta(u[0], u[1]));
             let energy = model::energy(u[0], u[1], u[2]);
             max_increase = max_increase.max(energy - e_prev);
             e_prev = energy;
@@ -482,6 +488,7 @@ impl<'a> Collider<'a> {
                     sticking_criterion: Some(criterion),
                     decided_at: u[3] * self.scales.t0,
                     max_energy_increase: max_increase * self.scales.e0,
+                    beta_max,
                     steps: step,
                     trajectory,
                 });
