@@ -153,28 +153,68 @@ pub fn figure2(res: Resolution, progress: Progress) -> Result<Vec<Table>, Error>
                 c.a_eq(),
                 c.delta_eq()
             ),
+            "400 points a trajectory at equal steps of its path length in (a/a_eq, delta/delta_eq, delta_dot/V_stick,JKR)".into(),
             "units: v_in [m/s], t [s], a [m], delta [m], delta_dot [m/s]".into(),
         ],
         &["v_in", "outcome", "t", "a", "delta", "delta_dot"],
     );
+    let n = res.pick(400, 8);
     for (v, run) in FIG2_V_IN.iter().zip(&runs) {
-        let last = run.trajectory.len().saturating_sub(1);
-        // about 500 points a trajectory (solver steps are dense near the ends of the crack)
-        let stride = (last / res.pick(500, 10)).max(1);
-        for (i, p) in run.trajectory.iter().enumerate() {
-            if i % stride == 0 || i == last {
-                t.push(vec![
-                    (*v).into(),
-                    run.outcome.as_str().into(),
-                    p.t.into(),
-                    p.a.into(),
-                    p.delta.into(),
-                    p.delta_dot.into(),
-                ]);
-            }
+        for p in resample(&run.trajectory, &c, n) {
+            t.push(vec![
+                (*v).into(),
+                run.outcome.as_str().into(),
+                p.t.into(),
+                p.a.into(),
+                p.delta.into(),
+                p.delta_dot.into(),
+            ]);
         }
     }
     Ok(vec![t])
+}
+
+/// `n` points at equal steps of the path length of a trajectory in the plane of
+/// `(a/a_eq, delta/delta_eq, delta_dot/V_stick,JKR)`, linearly interpolated between solver steps:
+/// the output does not depend on where the solver put its steps.
+fn resample(
+    traj: &[dynamics::TrajectoryPoint],
+    c: &Contact,
+    n: usize,
+) -> Vec<dynamics::TrajectoryPoint> {
+    let (sa, sd, sv) = (c.a_eq(), c.delta_eq(), c.v_stick_jkr());
+    let mut length = vec![0.0];
+    for w in traj.windows(2) {
+        let d = ((w[1].a - w[0].a) / sa)
+            .hypot((w[1].delta - w[0].delta) / sd)
+            .hypot((w[1].delta_dot - w[0].delta_dot) / sv);
+        length.push(length.last().copied().unwrap_or(0.0) + d);
+    }
+    let total = length.last().copied().unwrap_or(0.0);
+    let mut out = Vec::with_capacity(n);
+    let mut j = 0;
+    for i in 0..n {
+        let s = total * i as f64 / (n - 1).max(1) as f64;
+        while j + 2 < length.len() && length[j + 1] < s {
+            j += 1;
+        }
+        let (p, q) = (traj[j], traj[(j + 1).min(traj.len() - 1)]);
+        let span = length[(j + 1).min(length.len() - 1)] - length[j];
+        let f = if span > 0.0 {
+            ((s - length[j]) / span).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let mix = |x: f64, y: f64| x + f * (y - x);
+        out.push(dynamics::TrajectoryPoint {
+            t: mix(p.t, q.t),
+            a: mix(p.a, q.a),
+            delta: mix(p.delta, q.delta),
+            delta_dot: mix(p.delta_dot, q.delta_dot),
+            energy: mix(p.energy, q.energy),
+        });
+    }
+    out
 }
 
 /// Figure 3: coefficient of restitution against V_in for CO2, R1 = 60 um, T_vis = 1e-9 s.

@@ -12,10 +12,11 @@ pub mod table;
 /// Significant figures written to the CSV files.
 pub const CSV_DIGITS: usize = 10;
 
-/// Relative tolerance of `cargo xtask figures --check`: the bisections stop at 1e-6 relative,
-/// so committed values agree with a recomputation to a few parts in 1e-6 on any machine; physics
-/// that drifted moves them by far more.
-pub const CHECK_REL_TOL: f64 = 1e-5;
+/// Relative tolerance of `cargo xtask figures --check`. The bisections stop at 1e-6 and the
+/// collisions are integrated to 1e-8..1e-9, so a recomputation on another machine or with another
+/// linear-algebra backend agrees to about 1e-5 (e near the double-collision onset is the most
+/// sensitive); physics that drifted moves the numbers by far more.
+pub const CHECK_REL_TOL: f64 = 1e-4;
 
 /// Compares freshly computed figure tables with the committed files in `data_dir`, at the
 /// precision they are written ([`CSV_DIGITS`]) and within [`CHECK_REL_TOL`]. Returns the

@@ -167,8 +167,9 @@ impl Table {
             .collect()
     }
 
-    /// Compares with `expected`: same columns and rows, numbers within `rel_tol` (relative to the
-    /// larger magnitude), texts and missing cells equal. Returns every difference found (at most 10).
+    /// Compares with `expected`: same columns and rows, numbers within `rel_tol` relative to the
+    /// larger of the two magnitudes, floored at 1e-3 of the column's largest magnitude (for values
+    /// that cross zero), texts and missing cells equal. Returns the differences found (at most 10).
     pub fn compare(&self, expected: &Table, rel_tol: f64) -> Vec<String> {
         let mut diffs = Vec::new();
         if self.columns != expected.columns {
@@ -187,11 +188,24 @@ impl Table {
             ));
             return diffs;
         }
+        let scale: Vec<f64> = (0..self.columns.len())
+            .map(|j| {
+                expected
+                    .rows
+                    .iter()
+                    .filter_map(|r| match r[j] {
+                        Cell::Num(v) => Some(v.abs()),
+                        _ => None,
+                    })
+                    .fold(0.0, f64::max)
+            })
+            .collect();
         for (i, (a, b)) in self.rows.iter().zip(&expected.rows).enumerate() {
             for (j, (x, y)) in a.iter().zip(b).enumerate() {
                 let same = match (x, y) {
                     (Cell::Num(x), Cell::Num(y)) => {
-                        (x - y).abs() <= rel_tol * x.abs().max(y.abs()) || x == y
+                        let size = x.abs().max(y.abs()).max(1e-3 * scale[j]);
+                        (x - y).abs() <= rel_tol * size || x == y
                     }
                     _ => x == y,
                 };

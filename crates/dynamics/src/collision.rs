@@ -23,7 +23,8 @@ use crate::scales::Scales;
 use crate::DynamicsError;
 use contact::Contact;
 use diffsol::{
-    FaerLU, FaerMat, OdeBuilder, OdeEquations, OdeSolverMethod, OdeSolverStopReason, Vector,
+    FaerLU, FaerMat, NalgebraLU, NalgebraMat, OdeBuilder, OdeEquations, OdeSolverMethod,
+    OdeSolverStopReason, Vector,
 };
 use greenwood::CrackLaw;
 
@@ -40,11 +41,23 @@ pub enum Method {
     Esdirk34,
 }
 
+/// Which dense linear algebra diffsol uses for the 4 x 4 Newton systems.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Backend {
+    /// nalgebra: measured twice as fast as faer on this 4 x 4 system (`docs/performance.md`).
+    #[default]
+    Nalgebra,
+    /// faer.
+    Faer,
+}
+
 /// Numerical settings of a collision integration (all dimensionless).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverOptions {
     /// Integrator.
     pub method: Method,
+    /// Linear algebra of the Newton iterations.
+    pub backend: Backend,
     /// Relative tolerance of the state.
     pub rtol: f64,
     /// Absolute tolerance of the nondimensional state.
@@ -66,6 +79,7 @@ impl Default for SolverOptions {
     fn default() -> Self {
         Self {
             method: Method::Bdf,
+            backend: Backend::Nalgebra,
             rtol: 1e-9,
             atol: 1e-12,
             max_steps: 2_000_000,
@@ -318,47 +332,57 @@ impl<'a> Collider<'a> {
         let law = self.law;
         let beta_end = self.beta_end;
         let opts = &self.options;
-        let mut problem = OdeBuilder::<FaerMat<f64>>::new()
-            .rtol(opts.rtol)
-            .atol([opts.atol; NSTATES])
-            .h0(1e-6)
-            .rhs_implicit(
-                move |u: &[f64], _p: &[f64], _s: f64, out: &mut [f64]| {
-                    model::rhs(&params, law, u, out)
-                },
-                move |u: &[f64], _p: &[f64], _s: f64, w: &[f64], out: &mut [f64]| {
-                    model::jac_mul(&params, law, u, w, out)
-                },
-            )
-            .init(
-                move |_p: &[f64], _s: f64, y: &mut [f64]| y.copy_from_slice(&u0),
-                NSTATES,
-            )
-            .root(
-                move |u: &[f64], _p: &[f64], _s: f64, out: &mut [f64]| {
-                    out[0] = model::beta(u[0], u[1]) - beta_end
-                },
-                1,
-            )
-            .build()
-            .map_err(|e| self.solver_error(v_in, e))?;
-        // diffsol's BDF counts Newton failures over the whole integration, not per step: a long
-        // contact (many oscillations) with a few recovered failures at each graze of the JKR fold
-        // would abort after 50. Recovered failures are normal; the step budget bounds the work.
-        problem.ode_options.max_nonlinear_solver_failures = opts.max_steps;
-        match opts.method {
-            Method::Bdf => {
-                let mut solver = problem
-                    .bdf::<FaerLU<f64>>()
+        // The same problem for either linear-algebra backend.
+        macro_rules! integrate {
+            ($mat:ty, $lu:ty) => {{
+                let mut problem = OdeBuilder::<$mat>::new()
+                    .rtol(opts.rtol)
+                    .atol([opts.atol; NSTATES])
+                    .h0(1e-6)
+                    .rhs_implicit(
+                        move |u: &[f64], _p: &[f64], _s: f64, out: &mut [f64]| {
+                            model::rhs(&params, law, u, out)
+                        },
+                        move |u: &[f64], _p: &[f64], _s: f64, w: &[f64], out: &mut [f64]| {
+                            model::jac_mul(&params, law, u, w, out)
+                        },
+                    )
+                    .init(
+                        move |_p: &[f64], _s: f64, y: &mut [f64]| y.copy_from_slice(&u0),
+                        NSTATES,
+                    )
+                    .root(
+                        move |u: &[f64], _p: &[f64], _s: f64, out: &mut [f64]| {
+                            out[0] = model::beta(u[0], u[1]) - beta_end
+                        },
+                        1,
+                    )
+                    .build()
                     .map_err(|e| self.solver_error(v_in, e))?;
-                self.run(&mut solver, v_in)
-            }
-            Method::Esdirk34 => {
-                let mut solver = problem
-                    .esdirk34::<FaerLU<f64>>()
-                    .map_err(|e| self.solver_error(v_in, e))?;
-                self.run(&mut solver, v_in)
-            }
+                // diffsol's BDF counts Newton failures over the whole integration, not per step:
+                // a long contact (many oscillations) with a few recovered failures at each graze
+                // of the JKR fold would abort after 50. Recovered failures are normal; the step
+                // budget bounds the work.
+                problem.ode_options.max_nonlinear_solver_failures = opts.max_steps;
+                match opts.method {
+                    Method::Bdf => {
+                        let mut solver = problem
+                            .bdf::<$lu>()
+                            .map_err(|e| self.solver_error(v_in, e))?;
+                        self.run(&mut solver, v_in)
+                    }
+                    Method::Esdirk34 => {
+                        let mut solver = problem
+                            .esdirk34::<$lu>()
+                            .map_err(|e| self.solver_error(v_in, e))?;
+                        self.run(&mut solver, v_in)
+                    }
+                }
+            }};
+        }
+        match opts.backend {
+            Backend::Nalgebra => integrate!(NalgebraMat<f64>, NalgebraLU<f64>),
+            Backend::Faer => integrate!(FaerMat<f64>, FaerLU<f64>),
         }
     }
 

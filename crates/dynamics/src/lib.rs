@@ -21,7 +21,8 @@ pub mod model;
 pub mod scales;
 
 pub use collision::{
-    Collider, Collision, Method, Outcome, SolverOptions, StickingCriterion, TrajectoryPoint, EPS,
+    Backend, Collider, Collision, Method, Outcome, SolverOptions, StickingCriterion,
+    TrajectoryPoint, EPS,
 };
 pub use error::DynamicsError;
 pub use scales::Scales;

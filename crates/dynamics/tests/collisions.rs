@@ -2,7 +2,9 @@
 
 use contact::{Contact, Material};
 use dynamics::model::{self, end_energy_bound, Params};
-use dynamics::{Collider, DynamicsError, Method, Outcome, SolverOptions, StickingCriterion};
+use dynamics::{
+    Backend, Collider, DynamicsError, Method, Outcome, SolverOptions, StickingCriterion,
+};
 use greenwood::CrackLaw;
 
 fn co2_60um() -> Contact {
@@ -254,5 +256,33 @@ fn bad_inputs_are_typed_errors() {
             col.collide(v),
             Err(DynamicsError::OutOfRange { field: "v_in", .. })
         ));
+    }
+}
+
+/// The nalgebra and faer linear-algebra backends give the same collision.
+#[test]
+fn backends_agree() {
+    let law = law();
+    for v_in in [0.035, 0.0405, 0.045] {
+        let run = |backend: Backend| {
+            let opts = SolverOptions {
+                backend,
+                ..Default::default()
+            };
+            Collider::new(co2_60um(), &law, 1e-9)
+                .unwrap()
+                .with_options(opts)
+                .unwrap()
+                .collide(v_in)
+                .unwrap()
+        };
+        let (a, b) = (run(Backend::Nalgebra), run(Backend::Faer));
+        assert_eq!(a.outcome, b.outcome);
+        assert!(
+            (a.e - b.e).abs() <= 1e-9 * a.e.abs().max(1e-3),
+            "{v_in}: {} vs {}",
+            a.e,
+            b.e
+        );
     }
 }

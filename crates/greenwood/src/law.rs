@@ -120,9 +120,9 @@ pub(crate) fn check_beta(k: f64, beta: f64) -> Result<(), GreenwoodError> {
 /// `(k, 1/k)` and not 1.
 pub(crate) fn zeta_of_beta(k: f64, beta: f64) -> (Branch, f64) {
     if beta < 1.0 {
-        (Branch::Closing, (1.0 - beta).ln() - (beta - k).ln())
+        (Branch::Closing, ((1.0 - beta) / (beta - k)).ln())
     } else {
-        (Branch::Opening, (beta - 1.0).ln() - (1.0 / k - beta).ln())
+        (Branch::Opening, ((beta - 1.0) / (1.0 / k - beta)).ln())
     }
 }
 

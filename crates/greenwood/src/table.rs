@@ -8,9 +8,11 @@
 //! zeta = ln|beta - 1| - ln(distance of beta to k or 1/k),      w = ln|v|
 //! ```
 //! `w(zeta)` is smooth and close to linear at both ends (`|v| ~ 1/(beta - k)` near the limit and
-//! `|v| ~ |beta - 1| / ln alpha` near beta = 1), so local Lagrange interpolation of degree
+//! `|v| ~ |beta - 1| / ln alpha` near beta = 1), so local polynomial interpolation of degree
 //! [`STENCIL`]` - 1` on the (non-uniform) zeta nodes is accurate to better than 1e-8 relative in v
-//! (measured by the `crack_law_table` tests against direct evaluation between the nodes).
+//! (measured by the `crack_law` tests against direct evaluation between the nodes). The
+//! interpolants are stored as Newton divided differences per interval and found through a uniform
+//! bucket index, so an evaluation is a few dozen flops, two logarithms and one exponential.
 //! Outside the table (alpha beyond its range) w is extrapolated linearly, which keeps v and its
 //! derivative finite, monotone and of the right sign up to the bounds.
 
@@ -35,18 +37,72 @@ pub struct CrackSpeed {
     pub dv_dbeta: f64,
 }
 
-/// One branch's table: nodes sorted by increasing zeta.
+/// One branch's table: nodes sorted by increasing zeta, with, for every interval, the Newton
+/// divided differences of the [`STENCIL`]-point interpolant used on it, and a uniform bucket index
+/// over zeta for O(1) lookup.
 #[derive(Debug, Clone)]
 struct BranchTable {
     zeta: Vec<f64>,
     w: Vec<f64>,
+    /// `newton[i]`: divided differences of the stencil of interval `[zeta[i], zeta[i+1])`.
+    newton: Vec<[f64; STENCIL]>,
+    /// First node of each stencil.
+    start: Vec<usize>,
+    /// `bucket[b]`: the interval containing the left end of bucket `b`.
+    bucket: Vec<usize>,
+    bucket_origin: f64,
+    bucket_inv_width: f64,
 }
 
 impl BranchTable {
     fn from_points(mut points: Vec<(f64, f64)>) -> Self {
         points.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let (zeta, w) = points.into_iter().unzip();
-        Self { zeta, w }
+        let (zeta, w): (Vec<f64>, Vec<f64>) = points.into_iter().unzip();
+        let n = zeta.len();
+        let intervals = n - 1;
+        let mut newton = Vec::with_capacity(intervals);
+        let mut start = Vec::with_capacity(intervals);
+        for i in 0..intervals {
+            // the stencil centred on interval i: nodes i-2 ..= i+3, shifted inside the table
+            let s =
+                (i as isize + 1 - (STENCIL / 2) as isize).clamp(0, (n - STENCIL) as isize) as usize;
+            let xs = &zeta[s..s + STENCIL];
+            let mut dd = [0.0; STENCIL];
+            dd.copy_from_slice(&w[s..s + STENCIL]);
+            for order in 1..STENCIL {
+                for j in (order..STENCIL).rev() {
+                    dd[j] = (dd[j] - dd[j - 1]) / (xs[j] - xs[j - order]);
+                }
+            }
+            newton.push(dd);
+            start.push(s);
+        }
+        // buckets no wider than the narrowest interval: at most one interval boundary per bucket
+        let min_gap = zeta
+            .windows(2)
+            .map(|p| p[1] - p[0])
+            .fold(f64::INFINITY, f64::min);
+        let span = zeta[n - 1] - zeta[0];
+        let buckets = ((span / min_gap).ceil() as usize).clamp(1, 1 << 20);
+        let bucket_inv_width = buckets as f64 / span;
+        let mut bucket = Vec::with_capacity(buckets);
+        let mut i = 0;
+        for b in 0..buckets {
+            let left = zeta[0] + b as f64 / bucket_inv_width;
+            while i + 1 < intervals && zeta[i + 1] <= left {
+                i += 1;
+            }
+            bucket.push(i);
+        }
+        Self {
+            bucket_origin: zeta[0],
+            zeta,
+            w,
+            newton,
+            start,
+            bucket,
+            bucket_inv_width,
+        }
     }
 
     /// `(w, dw/dzeta)` at `z`.
@@ -61,35 +117,24 @@ impl BranchTable {
             let s = (self.w[last] - self.w[last - 1]) / (self.zeta[last] - self.zeta[last - 1]);
             return (self.w[last] + s * (z - self.zeta[last]), s);
         }
-        // i: first node with zeta > z, so z lies in [zeta[i-1], zeta[i]).
-        let i = self.zeta.partition_point(|&x| x <= z);
-        let start = (i as isize - (STENCIL / 2) as isize).clamp(0, (n - STENCIL) as isize) as usize;
-        let xs = &self.zeta[start..start + STENCIL];
-        let ys = &self.w[start..start + STENCIL];
-        lagrange_with_derivative(xs, ys, z)
-    }
-}
-
-/// Value and derivative at `z` of the Lagrange polynomial through `(xs, ys)`.
-fn lagrange_with_derivative(xs: &[f64], ys: &[f64], z: f64) -> (f64, f64) {
-    let mut value = 0.0;
-    let mut slope = 0.0;
-    for j in 0..xs.len() {
-        let mut basis = 1.0;
-        let mut dbasis = 0.0;
-        for m in 0..xs.len() {
-            if m == j {
-                continue;
-            }
-            let inv = 1.0 / (xs[j] - xs[m]);
-            let factor = (z - xs[m]) * inv;
-            dbasis = dbasis * factor + basis * inv;
-            basis *= factor;
+        let b = (((z - self.bucket_origin) * self.bucket_inv_width) as usize)
+            .min(self.bucket.len() - 1);
+        let mut i = self.bucket[b];
+        while i + 1 < last && self.zeta[i + 1] <= z {
+            i += 1;
         }
-        value += ys[j] * basis;
-        slope += ys[j] * dbasis;
+        let dd = &self.newton[i];
+        let xs = &self.zeta[self.start[i]..self.start[i] + STENCIL];
+        // Horner on the Newton form, carrying the derivative along
+        let mut value = dd[STENCIL - 1];
+        let mut slope = 0.0;
+        for j in (0..STENCIL - 1).rev() {
+            let t = z - xs[j];
+            slope = slope * t + value;
+            value = value * t + dd[j];
+        }
+        (value, slope)
     }
-    (value, slope)
 }
 
 /// Greenwood's crack law `v(k, beta)` for one k, evaluated by table interpolation.

@@ -3,8 +3,13 @@
 //! Along the impact speed the outcomes come in the order sticking < double collision < bouncing.
 //! `V_double_onset` is the sticking -> double transition and `V_stick` the double -> bouncing
 //! transition (the paper's threshold velocity for sticking). The double-collision window is narrow
-//! (2.6 % of V_stick at T_vis = 1e-9 s, 4e-6 at 1e-14 s), so each transition is bisected on its
+//! (2.6 % of V_stick at T_vis = 1e-9 s, 4e-6 at 1e-14 s), so each transition is searched on its
 //! own predicate ("not sticking", "bouncing") from one shared bracket, reusing every collision.
+//!
+//! V_out is continuous through V_stick (positive for double collisions, negative for bouncing),
+//! so V_stick is found by the Illinois variant of regula falsi on V_out(V_in) inside the bracket
+//! (a bisection step whenever the lower end is not yet a double collision). The onset is a
+//! discontinuity (e jumps from 0 to about -0.1), so it is bisected.
 
 use crate::ThresholdsError;
 use contact::Contact;
@@ -19,8 +24,21 @@ pub struct SearchOptions {
     /// Highest impact speed tried (m/s); `None` means 1000 V_stick,JKR. Without bouncing below it the
     /// result says so instead of returning a number.
     pub v_max: Option<f64>,
-    /// Settings of each collision.
+    /// Settings of each collision; the default is [`SearchOptions::default_solver`].
     pub solver: SolverOptions,
+}
+
+impl SearchOptions {
+    /// Collision settings for threshold searches: relative tolerance 1e-8 (absolute 1e-11), which
+    /// moves V_stick and V_double_onset by less than 5e-8 relative from a 1e-11 reference
+    /// (`docs/performance.md`), well inside the bisection tolerance of 1e-6.
+    pub fn default_solver() -> SolverOptions {
+        SolverOptions {
+            rtol: 1e-8,
+            atol: 1e-11,
+            ..SolverOptions::default()
+        }
+    }
 }
 
 impl Default for SearchOptions {
@@ -28,7 +46,7 @@ impl Default for SearchOptions {
         Self {
             rel_tol: 1e-6,
             v_max: None,
-            solver: SolverOptions::default(),
+            solver: Self::default_solver(),
         }
     }
 }
@@ -51,15 +69,25 @@ pub struct StickingThresholds {
     pub collisions: usize,
 }
 
-/// Every classified impact speed, for the two bisections.
+/// Every classified impact speed with its outcome and V_out, for the two searches.
 #[derive(Debug, Default)]
 struct Seen {
     points: Vec<(f64, Outcome)>,
+    v_out: Vec<f64>,
 }
 
 impl Seen {
-    fn record(&mut self, v: f64, outcome: Outcome) {
+    fn record(&mut self, v: f64, outcome: Outcome, v_out: f64) {
         self.points.push((v, outcome));
+        self.v_out.push(v_out);
+    }
+
+    /// V_out at a recorded speed.
+    fn v_out_at(&self, v: f64) -> Option<f64> {
+        self.points
+            .iter()
+            .position(|p| p.0 == v)
+            .map(|i| self.v_out[i])
     }
 
     /// Smallest speed with `is_above`, and the largest speed below it without.
@@ -138,9 +166,9 @@ pub fn sticking_thresholds(
     let collider = Collider::new(*contact, law, t_vis)?.with_options(opts.solver)?;
     let mut seen = Seen::default();
     let mut classify = |v: f64, seen: &mut Seen| -> Result<Outcome, ThresholdsError> {
-        let outcome = collider.collide(v)?.outcome;
-        seen.record(v, outcome);
-        Ok(outcome)
+        let c = collider.collide(v)?;
+        seen.record(v, c.outcome, c.v_out);
+        Ok(c.outcome)
     };
 
     // Lower bracket: a sticking collision. V_stick >= V_stick,JKR, so start just below it.
@@ -181,7 +209,7 @@ pub fn sticking_thresholds(
             collisions: seen.points.len(),
         });
     }
-    let v_stick = bisect(&mut seen, opts.rel_tol, &mut classify, bouncing)?;
+    let v_stick = regula_falsi_v_out(&mut seen, opts.rel_tol, &mut classify)?;
     let v_double_onset = bisect(&mut seen, opts.rel_tol, &mut classify, not_sticking)?;
     Ok(StickingThresholds {
         t_vis,
@@ -210,5 +238,52 @@ fn bisect(
             return Ok(0.5 * (lo + hi));
         }
         classify(0.5 * (lo + hi), seen)?;
+    }
+}
+
+/// V_stick by the Illinois variant of regula falsi on V_out inside the bracket of "bouncing";
+/// bisection while the lower end is not a double collision (V_out undefined for sticking).
+fn regula_falsi_v_out(
+    seen: &mut Seen,
+    rel_tol: f64,
+    classify: &mut impl FnMut(f64, &mut Seen) -> Result<Outcome, ThresholdsError>,
+) -> Result<f64, ThresholdsError> {
+    // Illinois: halve the weight of an end that stays for two steps in a row.
+    let mut weight_lo = 1.0;
+    let mut weight_hi = 1.0;
+    let mut last_moved: Option<bool> = None; // Some(true): the lower end moved last
+    loop {
+        let (Some(lo), Some(hi)) = seen.bracket(bouncing) else {
+            return Err(ThresholdsError::Internal(
+                "regula falsi started without a bracket".into(),
+            ));
+        };
+        if hi - lo <= rel_tol * hi {
+            return Ok(0.5 * (lo + hi));
+        }
+        let f_lo = seen.v_out_at(lo).unwrap_or(0.0);
+        let f_hi = seen.v_out_at(hi).unwrap_or(0.0);
+        let lo_is_double = f_lo > 0.0;
+        let mut v = if lo_is_double && f_hi < 0.0 {
+            let (a, b) = (weight_lo * f_lo, weight_hi * f_hi);
+            (lo * b - hi * a) / (b - a)
+        } else {
+            0.5 * (lo + hi)
+        };
+        // keep the new point strictly inside, at least a quarter tolerance from either end
+        let margin = 0.25 * rel_tol * hi;
+        v = v.clamp(lo + margin, hi - margin);
+        let moved_lo = classify(v, seen)? != Outcome::Bouncing;
+        if lo_is_double {
+            match (last_moved, moved_lo) {
+                (Some(true), true) => weight_hi *= 0.5,
+                (Some(false), false) => weight_lo *= 0.5,
+                _ => {
+                    weight_lo = 1.0;
+                    weight_hi = 1.0;
+                }
+            }
+            last_moved = Some(moved_lo);
+        }
     }
 }
