@@ -83,7 +83,7 @@ impl Default for SolverOptions {
             rtol: 1e-9,
             atol: 1e-12,
             max_steps: 2_000_000,
-            max_oscillations: 2,
+            max_oscillations: 1,
             energy_margin: 1e-4,
             record_trajectory: false,
             decide_after: 0.0,

@@ -19,24 +19,27 @@
 //! about 2 to `(1 - eps)/k`) in a time below the floating-point spacing of t. The integration
 //! therefore runs in a pseudo-time `s` with
 //! ```text
-//! dtau/ds = g = 1 / sqrt(1 + (lambda v / F_c)^2),    F_c = SPEED_CAP = 1e3
+//! dtau/ds = g = 1 / sqrt(1 + (lambda v / F_c)^2),    F_c = lambda clamped to [1, SPEED_CAP = 1e3]
 //! ```
 //! carrying `tau` as the fourth state. Every right-hand side is then bounded (`|dx/ds| < F_c`):
 //! the collapse of the crack takes `Delta s ~ Delta x / F_c` however small T_vis is. Where the crack
 //! moves at the speed of the slow, JKR-like motion (`|dx/dtau| = lambda |v| = O(1) << F_c`),
 //! `s` is the time itself, so the stiff but smooth dynamics near beta = 1 is left as it is.
-//! Two choices were measured to fail there and are avoided: a cap of order one (`F_c ~ 1`) turns
-//! the crack equation into a steep sigmoid in x whose Newton iterations do not converge for
-//! T_vis < 1e-13 s; and a normalizer with `|v|` (such as `1/(1 + lambda |v|)`) has a kink at v = 0,
-//! exactly where the solution sits. F_c = 1e3 and 1e4 both integrate T_vis = 1e-9..1e-16 s with
-//! BDF and ESDIRK34.
+//! Two choices were measured to fail there and are avoided: for large lambda a cap of order one
+//! turns the crack equation into a steep sigmoid in x whose Newton iterations do not converge
+//! for T_vis < 1e-13 s; and a normalizer with `|v|` (such as `1/(1 + lambda |v|)`) has a kink at
+//! v = 0, exactly where the solution sits. For small lambda (T_vis ~ 1e-9 s) a cap of about
+//! lambda flattens the initial growth and the final collapse of the crack, which otherwise span
+//! decades of time scale and half of the solver steps; it halves the steps there. This cap
+//! integrates T_vis = 1e-6..1e-16 s with BDF and ESDIRK34.
 
 use greenwood::CrackLaw;
 
 /// Number of ODE states: `(x, y, p, tau)`.
 pub const NSTATES: usize = 4;
 
-/// Crack speed `|dx/dtau|` above which the pseudo-time slows down (see the module docs).
+/// Largest crack speed `|dx/dtau|` above which the pseudo-time slows down; the cap used is
+/// `lambda` clamped to `[1, SPEED_CAP]` (see the module docs).
 pub const SPEED_CAP: f64 = 1e3;
 
 /// Parameters of the nondimensional system.

@@ -40,7 +40,9 @@ impl Scales {
             lambda: contact.crack_speed_unit(t_vis) * self.t0 / self.a_eq,
             c_d: 2.0 * contact.drag_time(t_vis) * contact.e_star() * self.a_eq * self.t0
                 / contact.m_star(),
-            speed_cap: crate::model::SPEED_CAP,
+            // F_c = lambda within [1, SPEED_CAP]: see crate::model, "Pseudo-time"
+            speed_cap: (contact.crack_speed_unit(t_vis) * self.t0 / self.a_eq)
+                .clamp(1.0, crate::model::SPEED_CAP),
         }
     }
 }

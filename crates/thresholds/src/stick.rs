@@ -7,9 +7,11 @@
 //! own predicate ("not sticking", "bouncing") from one shared bracket, reusing every collision.
 //!
 //! V_out is continuous through V_stick (positive for double collisions, negative for bouncing),
-//! so V_stick is found by the Illinois variant of regula falsi on V_out(V_in) inside the bracket
-//! (a bisection step whenever the lower end is not yet a double collision). The onset is a
-//! discontinuity (e jumps from 0 to about -0.1), so it is bisected.
+//! so V_stick is found by regula falsi on V_out(V_in) inside its bracket (the midpoint whenever
+//! the lower end is not yet a double collision). The onset is a discontinuity (e jumps from 0 to
+//! about -0.1), so it is bisected. Each round integrates two speeds: one for each transition
+//! while both are open, then two for the remaining one (regula falsi and midpoint for V_stick,
+//! trisection for the onset).
 
 use crate::ThresholdsError;
 use contact::Contact;
@@ -26,6 +28,8 @@ pub struct SearchOptions {
     pub v_max: Option<f64>,
     /// Settings of each collision; the default is [`SearchOptions::default_solver`].
     pub solver: SolverOptions,
+    /// Integrate the two collisions of each round on two threads (the result is the same).
+    pub parallel: bool,
 }
 
 impl SearchOptions {
@@ -47,6 +51,7 @@ impl Default for SearchOptions {
             rel_tol: 1e-6,
             v_max: None,
             solver: Self::default_solver(),
+            parallel: true,
         }
     }
 }
@@ -144,6 +149,10 @@ fn check_options(opts: &SearchOptions) -> Result<(), ThresholdsError> {
 
 /// V_stick and V_double_onset of `contact` at relaxation time `t_vis` (s, >= 0) with the crack
 /// law `law` (its k). `t_vis = 0` is the JKR limit: both equal V_stick,JKR.
+///
+/// Every round integrates two impact speeds, concurrently when [`SearchOptions::parallel`] is set
+/// (two cores halve the wall time); the speeds chosen depend only on the outcomes seen, so the
+/// result is the same either way.
 pub fn sticking_thresholds(
     contact: &Contact,
     law: &CrackLaw,
@@ -165,125 +174,120 @@ pub fn sticking_thresholds(
     }
     let collider = Collider::new(*contact, law, t_vis)?.with_options(opts.solver)?;
     let mut seen = Seen::default();
-    let mut classify = |v: f64, seen: &mut Seen| -> Result<Outcome, ThresholdsError> {
-        let c = collider.collide(v)?;
-        seen.record(v, c.outcome, c.v_out);
-        Ok(c.outcome)
+    let round = |speeds: [f64; 2], seen: &mut Seen| -> Result<(), ThresholdsError> {
+        let one = |v: f64| collider.collide(v);
+        let (a, b) = if opts.parallel {
+            rayon::join(|| one(speeds[0]), || one(speeds[1]))
+        } else {
+            (one(speeds[0]), one(speeds[1]))
+        };
+        for (v, c) in speeds.into_iter().zip([a?, b?]) {
+            seen.record(v, c.outcome, c.v_out);
+        }
+        Ok(())
     };
-
-    // Lower bracket: a sticking collision. V_stick >= V_stick,JKR, so start just below it.
+    let tol = opts.rel_tol;
     let v_floor = 1e-6 * v_jkr;
+
+    // Lower bracket: a sticking collision. V_stick >= V_stick,JKR, so start just below it (and
+    // try 1.6 V_stick,JKR towards the upper bracket in the same round).
     let mut v = (0.99 * v_jkr).min(0.5 * v_max);
-    while classify(v, &mut seen)? != Outcome::Sticking {
-        v *= 0.5;
+    round([v, (1.6 * v).min(v_max)], &mut seen)?;
+    while !seen.has(|o| o == Outcome::Sticking) {
+        v *= 0.25;
         if v < v_floor {
             return Err(ThresholdsError::NoSticking { v_min: v, t_vis });
         }
+        round([2.0 * v, v], &mut seen)?;
     }
-    // Upper bracket: a bouncing collision, growing by 1.5 up to v_max.
-    while !seen.has(bouncing) {
-        if v >= v_max {
-            break;
-        }
-        v = (1.5 * v).min(v_max);
-        classify(v, &mut seen)?;
+    // Upper bracket: a bouncing collision, growing by 1.5 a step up to v_max.
+    let mut top = seen.points.iter().map(|p| p.0).fold(0.0, f64::max);
+    while !seen.has(bouncing) && top < v_max {
+        let a = (1.5 * top).min(v_max);
+        let b = (1.5 * a).min(v_max);
+        round([a, b], &mut seen)?;
+        top = b;
     }
-    if !seen.has(bouncing) {
-        // No bouncing up to v_max; maybe not even a double collision.
-        let v_double_onset = if seen.has(not_sticking) {
-            Some(bisect(
-                &mut seen,
-                opts.rel_tol,
-                &mut classify,
-                not_sticking,
-            )?)
-        } else {
-            None
+
+    // Both transitions, two speeds a round.
+    let converged = |(lo, hi): (Option<f64>, Option<f64>)| match (lo, hi) {
+        (Some(lo), Some(hi)) => hi - lo <= tol * hi,
+        _ => true, // nothing to search (for example no bouncing below v_max)
+    };
+    loop {
+        let stick_bracket = seen.bracket(bouncing);
+        let onset_bracket = seen.bracket(not_sticking);
+        let (stick_done, onset_done) = (converged(stick_bracket), converged(onset_bracket));
+        let speeds = match (stick_done, onset_done) {
+            (true, true) => break,
+            (false, false) => {
+                let p = regula_falsi_point(&seen, stick_bracket, tol);
+                let q = midpoint(onset_bracket);
+                if (p - q).abs() > tol * p {
+                    [p, q]
+                } else {
+                    // one bracket for both: trisect it
+                    let (lo, hi) = (
+                        onset_bracket.0.unwrap_or(0.0),
+                        stick_bracket.1.unwrap_or(0.0),
+                    );
+                    [lo + (hi - lo) / 3.0, lo + 2.0 * (hi - lo) / 3.0]
+                }
+            }
+            (false, true) => {
+                let p = regula_falsi_point(&seen, stick_bracket, tol);
+                [p, midpoint(stick_bracket)]
+            }
+            (true, false) => {
+                let (lo, hi) = (
+                    onset_bracket.0.unwrap_or(0.0),
+                    onset_bracket.1.unwrap_or(0.0),
+                );
+                [lo + (hi - lo) / 3.0, lo + 2.0 * (hi - lo) / 3.0]
+            }
         };
-        return Ok(StickingThresholds {
-            t_vis,
-            v_stick: None,
-            v_double_onset,
-            v_stick_jkr: v_jkr,
-            v_max,
-            collisions: seen.points.len(),
-        });
+        round(speeds, &mut seen)?;
     }
-    let v_stick = regula_falsi_v_out(&mut seen, opts.rel_tol, &mut classify)?;
-    let v_double_onset = bisect(&mut seen, opts.rel_tol, &mut classify, not_sticking)?;
+    let center = |(lo, hi): (Option<f64>, Option<f64>)| match (lo, hi) {
+        (Some(lo), Some(hi)) => Some(0.5 * (lo + hi)),
+        _ => None,
+    };
+    let v_stick = if seen.has(bouncing) {
+        center(seen.bracket(bouncing))
+    } else {
+        None
+    };
+    let v_double_onset = if seen.has(not_sticking) {
+        center(seen.bracket(not_sticking))
+    } else {
+        None
+    };
     Ok(StickingThresholds {
         t_vis,
-        v_stick: Some(v_stick),
-        v_double_onset: Some(v_double_onset),
+        v_stick,
+        v_double_onset,
         v_stick_jkr: v_jkr,
         v_max,
         collisions: seen.points.len(),
     })
 }
 
-/// Bisects the transition to `is_above` inside the bracket of what `seen` holds.
-fn bisect(
-    seen: &mut Seen,
-    rel_tol: f64,
-    classify: &mut impl FnMut(f64, &mut Seen) -> Result<Outcome, ThresholdsError>,
-    is_above: fn(Outcome) -> bool,
-) -> Result<f64, ThresholdsError> {
-    loop {
-        let (Some(lo), Some(hi)) = seen.bracket(is_above) else {
-            return Err(ThresholdsError::Internal(
-                "bisection started without a bracket".into(),
-            ));
-        };
-        if hi - lo <= rel_tol * hi {
-            return Ok(0.5 * (lo + hi));
-        }
-        classify(0.5 * (lo + hi), seen)?;
-    }
+fn midpoint((lo, hi): (Option<f64>, Option<f64>)) -> f64 {
+    0.5 * (lo.unwrap_or(0.0) + hi.unwrap_or(0.0))
 }
 
-/// V_stick by the Illinois variant of regula falsi on V_out inside the bracket of "bouncing";
-/// bisection while the lower end is not a double collision (V_out undefined for sticking).
-fn regula_falsi_v_out(
-    seen: &mut Seen,
-    rel_tol: f64,
-    classify: &mut impl FnMut(f64, &mut Seen) -> Result<Outcome, ThresholdsError>,
-) -> Result<f64, ThresholdsError> {
-    // Illinois: halve the weight of an end that stays for two steps in a row.
-    let mut weight_lo = 1.0;
-    let mut weight_hi = 1.0;
-    let mut last_moved: Option<bool> = None; // Some(true): the lower end moved last
-    loop {
-        let (Some(lo), Some(hi)) = seen.bracket(bouncing) else {
-            return Err(ThresholdsError::Internal(
-                "regula falsi started without a bracket".into(),
-            ));
-        };
-        if hi - lo <= rel_tol * hi {
-            return Ok(0.5 * (lo + hi));
-        }
-        let f_lo = seen.v_out_at(lo).unwrap_or(0.0);
-        let f_hi = seen.v_out_at(hi).unwrap_or(0.0);
-        let lo_is_double = f_lo > 0.0;
-        let mut v = if lo_is_double && f_hi < 0.0 {
-            let (a, b) = (weight_lo * f_lo, weight_hi * f_hi);
-            (lo * b - hi * a) / (b - a)
-        } else {
-            0.5 * (lo + hi)
-        };
-        // keep the new point strictly inside, at least a quarter tolerance from either end
-        let margin = 0.25 * rel_tol * hi;
-        v = v.clamp(lo + margin, hi - margin);
-        let moved_lo = classify(v, seen)? != Outcome::Bouncing;
-        if lo_is_double {
-            match (last_moved, moved_lo) {
-                (Some(true), true) => weight_hi *= 0.5,
-                (Some(false), false) => weight_lo *= 0.5,
-                _ => {
-                    weight_lo = 1.0;
-                    weight_hi = 1.0;
-                }
-            }
-            last_moved = Some(moved_lo);
-        }
-    }
+/// The regula falsi point of V_out(V_in) in the V_stick bracket when its lower end is a double
+/// collision (V_out > 0 there, < 0 at the bouncing end), else the midpoint; kept a quarter of the
+/// tolerance inside the bracket.
+fn regula_falsi_point(seen: &Seen, (lo, hi): (Option<f64>, Option<f64>), tol: f64) -> f64 {
+    let (lo, hi) = (lo.unwrap_or(0.0), hi.unwrap_or(0.0));
+    let f_lo = seen.v_out_at(lo).unwrap_or(0.0);
+    let f_hi = seen.v_out_at(hi).unwrap_or(0.0);
+    let v = if f_lo > 0.0 && f_hi < 0.0 {
+        (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
+    } else {
+        0.5 * (lo + hi)
+    };
+    let margin = 0.25 * tol * hi;
+    v.clamp(lo + margin, hi - margin)
 }
