@@ -1,0 +1,42 @@
+//! V_stick searches (both transitions, relative tolerance 1e-6) for the three reference cases of
+//! the Speed issue, and a Figure-4-like sweep (2 k x 11 T_vis). `cargo bench -p thresholds`.
+
+use contact::{Contact, Material};
+use criterion::{criterion_group, criterion_main, Criterion};
+use greenwood::CrackLaw;
+use std::hint::black_box;
+use thresholds::{sticking_thresholds, SearchOptions};
+
+fn v_stick(c: &mut Criterion) {
+    let law = CrackLaw::new(0.01).expect("k in range");
+    let co2 = Contact::new(Material::co2(), 60e-6).expect("valid");
+    let h2o = Contact::new(Material::h2o(), 90e-6).expect("valid");
+    let opts = SearchOptions::default();
+    let mut group = c.benchmark_group("v_stick");
+    group.sample_size(20);
+    for (name, contact, t_vis) in [
+        ("co2_60um_1e-9", co2, 1e-9),
+        ("co2_60um_1e-14", co2, 1e-14),
+        ("h2o_90um_1e-9", h2o, 1e-9),
+    ] {
+        group.bench_function(name, |b| {
+            b.iter(|| sticking_thresholds(&contact, &law, black_box(t_vis), &opts))
+        });
+    }
+    group.sample_size(10);
+    group.bench_function("sweep_2k_x_11t_vis", |b| {
+        b.iter(|| {
+            for k in [0.01, 0.02] {
+                let law = CrackLaw::new(k).expect("k in range");
+                for i in 0..11 {
+                    let t_vis = 1e-12 * 10f64.powf(i as f64 * 0.4);
+                    black_box(sticking_thresholds(&co2, &law, t_vis, &opts).ok());
+                }
+            }
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, v_stick);
+criterion_main!(benches);
