@@ -3,11 +3,12 @@
 use crate::error::CliError;
 use serde_json::{Map, Value};
 
-/// One command's result: named numbers with units, plus free-form JSON fields.
+/// One command's result: named numbers with units, plus free-form JSON fields and warnings.
 #[derive(Debug, Default)]
 pub struct Report {
     title: String,
     rows: Vec<(String, Value, &'static str)>,
+    warnings: Vec<String>,
 }
 
 impl Report {
@@ -16,6 +17,7 @@ impl Report {
         Self {
             title: title.into(),
             rows: Vec::new(),
+            warnings: Vec::new(),
         }
     }
 
@@ -35,12 +37,22 @@ impl Report {
         self.rows.push((key.to_string(), value, unit));
     }
 
-    /// The report as one JSON object (keys in insertion order).
+    /// Adds the model's warnings for a contact (printed on stderr, listed in JSON).
+    pub fn warn_about(&mut self, contact: &contact::Contact) {
+        self.warnings
+            .extend(contact.warnings().iter().map(|w| w.to_string()));
+    }
+
+    /// The report as one JSON object (keys in insertion order), with a `warnings` list.
     pub fn to_json(&self) -> String {
         let mut map = Map::new();
         for (k, v, _) in &self.rows {
             map.insert(k.clone(), v.clone());
         }
+        map.insert(
+            "warnings".into(),
+            Value::Array(self.warnings.iter().cloned().map(Value::from).collect()),
+        );
         Value::Object(map).to_string()
     }
 
@@ -62,8 +74,11 @@ impl Report {
         out
     }
 
-    /// Prints the report in the requested form.
+    /// Prints the report in the requested form; warnings also go to stderr.
     pub fn print(&self, json: bool) {
+        for w in &self.warnings {
+            eprintln!("warning: {w}");
+        }
         if json {
             println!("{}", self.to_json());
         } else {

@@ -183,3 +183,22 @@ fn bad_collision_input() {
     assert_eq!(code, 2);
     assert!(err.contains("JKR"), "{err}");
 }
+
+/// Section 2.2: JKR theory needs a Tabor parameter mu >> 1; small grains get a warning on stderr
+/// and in the JSON "warnings" list, large ones none.
+#[test]
+fn tabor_warning_for_small_grains() {
+    let out = Command::new(env!("CARGO_BIN_EXE_stickiness"))
+        .args(["jkr", "--radius", "1e-8", "--json"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(j["tabor"].as_f64().unwrap() < 1.0);
+    let w = j["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 1);
+    assert!(w[0].as_str().unwrap().contains("Tabor"));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("warning: Tabor"));
+    let j = json(&["jkr", "--json"]);
+    assert_eq!(j["warnings"].as_array().map(Vec::len), Some(0));
+}

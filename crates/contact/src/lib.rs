@@ -30,4 +30,4 @@ pub mod sphere;
 
 pub use error::ContactError;
 pub use material::{elastic_from_sound_speeds, Material, PRESETS};
-pub use sphere::{Contact, SURFACE_FORCE_RANGE};
+pub use sphere::{Contact, Warning, SURFACE_FORCE_RANGE, TABOR_MIN};

@@ -18,6 +18,31 @@ pub const E_STICK_COEFF: f64 = 0.9355;
 /// `E_break,JKR = 1.54 F_crit delta_crit` (Section 6, Wada et al. 2007), dimensionless.
 pub const E_BREAK_COEFF: f64 = 1.54;
 
+/// Tabor parameter below which JKR theory is outside its validity (Section 2.2: it needs mu >> 1).
+pub const TABOR_MIN: f64 = 1.0;
+
+/// A condition under which the model's results should be read with care.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Warning {
+    /// The Tabor parameter is below [`TABOR_MIN`]: surface forces act outside the contact and JKR
+    /// theory, on which the model stands, does not apply (Section 2.2).
+    JkrOutsideValidity {
+        /// The Tabor parameter mu (dimensionless).
+        tabor: f64,
+    },
+}
+
+impl std::fmt::Display for Warning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Warning::JkrOutsideValidity { tabor } => write!(
+                f,
+                "Tabor parameter mu = {tabor:.3} < {TABOR_MIN}: JKR theory (mu >> 1) is outside its validity for these grains (Arakawa & Krijt 2021, Section 2.2)"
+            ),
+        }
+    }
+}
+
 /// Head-on contact of two identical spheres of radius `r1` made of one [`Material`].
 ///
 /// Reduced quantities (Section 2.1): `R = R1/2`, `E* = E / (2 (1 - nu^2))`, `m* = m1/2` with
@@ -108,6 +133,16 @@ impl Contact {
     pub fn tabor(&self) -> f64 {
         let (g, e) = (self.gamma(), self.e_star());
         (self.reduced_radius() * g * g / (e * e)).cbrt() / self.epsilon
+    }
+
+    /// Conditions under which the results of this contact should be read with care.
+    pub fn warnings(&self) -> Vec<Warning> {
+        let tabor = self.tabor();
+        if tabor < TABOR_MIN {
+            vec![Warning::JkrOutsideValidity { tabor }]
+        } else {
+            Vec::new()
+        }
     }
 
     /// Pull-off force F_crit = 3 pi gamma R / 2 (N) (Section 6).

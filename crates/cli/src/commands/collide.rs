@@ -47,6 +47,7 @@ pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
         "Collision of two {} spheres, R1 = {} m, T_vis = {} s, V_in = {} m/s, k = {}",
         args.material.material, args.material.radius, args.t_vis, args.v_in, args.k.k
     ));
+    r.warn_about(&contact);
     r.value("outcome", Value::from(c.outcome.as_str()), "");
     r.number("e", c.e, "")?;
     r.number("v_out", c.v_out, "m/s")?;

@@ -44,6 +44,7 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
         "Relaxation time for V_stick = {} ± {} m/s, two {} spheres, R1 = {} m, k = {}",
         args.v_stick, args.v_stick_err, args.material.material, args.material.radius, args.k.k
     ));
+    r.warn_about(&contact);
     r.number("t_vis", fit.t_vis, "s")?;
     r.number("t_vis_min", fit.t_vis_min, "s")?;
     r.number("t_vis_max", fit.t_vis_max, "s")?;

@@ -19,6 +19,7 @@ pub fn run(args: &JkrArgs) -> Result<Report, CliError> {
         "JKR contact of two {} spheres, R1 = {} m",
         args.material.material, args.material.radius
     ));
+    r.warn_about(&c);
     r.number("a_eq", c.a_eq(), "m")?;
     r.number("delta_eq", c.delta_eq(), "m")?;
     r.number("tabor", c.tabor(), "")?;

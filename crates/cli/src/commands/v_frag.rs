@@ -46,6 +46,7 @@ pub fn run(args: &VFragArgs) -> Result<Report, CliError> {
         "Fragmentation velocity of aggregates of {} monomers, R1 = {} m, T_vis = {t_vis} s, k = {}",
         args.material.material, args.material.radius, args.k.k
     ));
+    r.warn_about(&contact);
     match th.v_stick {
         Some(v) => r.number("v_frag", thresholds::v_frag(v), "m/s")?,
         None => r.value(

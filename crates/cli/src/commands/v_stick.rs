@@ -31,6 +31,7 @@ pub fn run(args: &VStickArgs) -> Result<Report, CliError> {
         "Sticking thresholds of two {} spheres, R1 = {} m, T_vis = {} s, k = {}",
         args.material.material, args.material.radius, args.t_vis, args.k.k
     ));
+    r.warn_about(&contact);
     optional(&mut r, "v_stick", th.v_stick)?;
     optional(&mut r, "v_double_onset", th.v_double_onset)?;
     r.number("v_stick_jkr", th.v_stick_jkr, "m/s")?;
