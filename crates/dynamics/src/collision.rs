@@ -339,6 +339,9 @@ impl<'a> Collider<'a> {
                     .rtol(opts.rtol)
                     .atol([opts.atol; NSTATES])
                     .h0(1e-6)
+                    // the coloring path assembles the Jacobian in preallocated scratch vectors
+                    // (the default path allocates two vectors per Jacobian evaluation)
+                    .use_coloring(true)
                     .rhs_implicit(
                         move |u: &[f64], _p: &[f64], _s: f64, out: &mut [f64]| {
                             model::rhs(&params, law, u, out)
