@@ -20,6 +20,46 @@ const BAND: RGBColor = RGBColor(255, 221, 87);
 const FONT: (&str, u32) = ("sans-serif", 18);
 
 type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+type LogLog<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
+
+/// A chart with log axes, labelled in scientific notation.
+fn log_log<'a, 'b>(
+    area: &'a Area<'b>,
+    caption: &str,
+    x: std::ops::Range<f64>,
+    y: std::ops::Range<f64>,
+    x_desc: &str,
+    y_desc: &str,
+) -> Result<LogLog<'a, 'b>, Error> {
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, FONT)
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x.log_scale(), y.log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .x_label_formatter(&sci)
+        .y_label_formatter(&sci)
+        .draw()?;
+    Ok(chart)
+}
+
+/// Draws the legend of `chart` at `pos`.
+fn legend<'a, 'b: 'a, CT: CoordTranslate>(
+    chart: &mut ChartContext<'a, SVGBackend<'b>, CT>,
+    pos: SeriesLabelPosition,
+) -> Result<(), Error> {
+    chart
+        .configure_series_labels()
+        .position(pos)
+        .border_style(BLACK)
+        .background_style(WHITE.mix(0.9))
+        .draw()?;
+    Ok(())
+}
 
 /// Pairs `(x, y)` of two columns where both are numbers, optionally filtered by row.
 fn xy(t: &Table, x: &str, y: &str, keep: impl Fn(usize) -> bool) -> Vec<(f64, f64)> {
@@ -123,11 +163,7 @@ fn fig1(t: &Table, path: &Path) -> Result<(), Error> {
             .legend(legend_line(c));
         chart.draw_series(LineSeries::new(opening, c.stroke_width(1)))?;
     }
-    chart
-        .configure_series_labels()
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .draw()?;
+    legend(&mut chart, SeriesLabelPosition::MiddleRight)?;
     let mut zoom = ChartBuilder::on(&right)
         .caption("v near beta = 1", FONT)
         .margin(12)
@@ -152,10 +188,7 @@ fn fig1(t: &Table, path: &Path) -> Result<(), Error> {
             .label(format!("k = {k}"))
             .legend(legend_line(c));
     }
-    zoom.configure_series_labels()
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .draw()?;
+    legend(&mut zoom, SeriesLabelPosition::MiddleRight)?;
     root.present()?;
     Ok(())
 }
@@ -230,16 +263,8 @@ fn fig2(t: &Table, path: &Path) -> Result<(), Error> {
     };
     da.draw_series(std::iter::once(star(d_eq * 1e9, a_eq * 1e6)))?;
     dv.draw_series(std::iter::once(star(d_eq * 1e9, 0.0)))?;
-    da.configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .draw()?;
-    dv.configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .draw()?;
+    legend(&mut da, SeriesLabelPosition::LowerRight)?;
+    legend(&mut dv, SeriesLabelPosition::LowerRight)?;
     root.present()?;
     Ok(())
 }
@@ -291,12 +316,7 @@ fn fig3(t: &Table, path: &Path) -> Result<(), Error> {
         )))?
         .label(format!("V_stick = {:.3} cm/s", 100.0 * vs))
         .legend(|(x, y)| Circle::new((x + 10, y), 5, GREY.filled()));
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::LowerRight)
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .draw()?;
+    legend(&mut chart, SeriesLabelPosition::LowerRight)?;
     root.present()?;
     Ok(())
 }
@@ -310,19 +330,14 @@ fn fig4(t: &Table, path: &Path) -> Result<(), Error> {
     kvals.sort_by(f64::total_cmp);
     kvals.dedup();
     let (x0, x1) = (1e-12f64, 1e-8f64);
-    let mut chart = ChartBuilder::on(&root)
-        .caption("Figure 4: CO2, R1 = 60 um", FONT)
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d((x0..x1).log_scale(), (1e-2f64..0.3).log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc("relaxation time T_vis (s)")
-        .y_desc("threshold velocity for sticking V_stick (m/s)")
-        .x_label_formatter(&sci)
-        .y_label_formatter(&sci)
-        .draw()?;
+    let mut chart = log_log(
+        &root,
+        "Figure 4: CO2, R1 = 60 um",
+        x0..x1,
+        1e-2..0.3,
+        "relaxation time T_vis (s)",
+        "threshold velocity for sticking V_stick (m/s)",
+    )?;
     chart
         .draw_series(std::iter::once(Rectangle::new(
             [(x0, 0.02), (x1, 0.06)],
@@ -352,12 +367,7 @@ fn fig4(t: &Table, path: &Path) -> Result<(), Error> {
             .label(format!("V_stick,JKR = {:.3e} m/s", vj))
             .legend(|(x, y)| TriangleMarker::new((x + 10, y), 6, BLACK.filled()));
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .draw()?;
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
     root.present()?;
     Ok(())
 }
@@ -370,22 +380,14 @@ fn fig5(t: &Table, path: &Path) -> Result<(), Error> {
     gvals.sort_by(f64::total_cmp);
     gvals.dedup();
     let (x0, x1) = (1e-12f64, 1e-7f64);
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "Figure 5: H2O, R1 = 90 um (curves end where no collision bounces)",
-            FONT,
-        )
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d((x0..x1).log_scale(), (1e-3f64..10.0).log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc("relaxation time T_vis (s)")
-        .y_desc("threshold velocity for sticking V_stick (m/s)")
-        .x_label_formatter(&sci)
-        .y_label_formatter(&sci)
-        .draw()?;
+    let mut chart = log_log(
+        &root,
+        "Figure 5: H2O, R1 = 90 um (curves end where no collision bounces)",
+        x0..x1,
+        1e-3..10.0,
+        "relaxation time T_vis (s)",
+        "threshold velocity for sticking V_stick (m/s)",
+    )?;
     chart
         .draw_series(LineSeries::new(
             [(x0, 0.73), (x1, 0.73)],
@@ -405,12 +407,7 @@ fn fig5(t: &Table, path: &Path) -> Result<(), Error> {
             chart.draw_series(std::iter::once(Cross::new(p, 6, c.stroke_width(2))))?;
         }
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .draw()?;
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
     root.present()?;
     Ok(())
 }
@@ -418,19 +415,14 @@ fn fig5(t: &Table, path: &Path) -> Result<(), Error> {
 fn fig6(points: &Table, laws: &Table, path: &Path) -> Result<(), Error> {
     let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
     root.fill(&WHITE)?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption("Figure 6: relaxation time against particle radius", FONT)
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d((0.1f64..1000.0).log_scale(), (1e-13f64..1e-6).log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc("particle radius R1 (um)")
-        .y_desc("relaxation time T_vis (s)")
-        .x_label_formatter(&sci)
-        .y_label_formatter(&sci)
-        .draw()?;
+    let mut chart = log_log(
+        &root,
+        "Figure 6: relaxation time against particle radius",
+        0.1..1000.0,
+        1e-13..1e-6,
+        "particle radius R1 (um)",
+        "relaxation time T_vis (s)",
+    )?;
     for (name, col, c) in [
         ("CO2 law", "t_vis_co2", COLOURS[0]),
         ("H2O law", "t_vis_h2o", COLOURS[1]),
@@ -482,12 +474,7 @@ fn fig6(points: &Table, laws: &Table, path: &Path) -> Result<(), Error> {
                 .legend(move |(x, y)| Circle::new((x + 10, y), 4, c.filled()));
         }
     }
-    chart
-        .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .draw()?;
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
     root.present()?;
     Ok(())
 }
@@ -518,19 +505,14 @@ fn fig7(t: &Table, path: &Path) -> Result<(), Error> {
             1e-2f64..1000.0,
         ),
     ] {
-        let mut chart = ChartBuilder::on(area)
-            .caption(format!("Figure 7: CO2 monomers, {what}"), FONT)
-            .margin(12)
-            .x_label_area_size(45)
-            .y_label_area_size(70)
-            .build_cartesian_2d((0.1f64..100.0).log_scale(), yr.log_scale())?;
-        chart
-            .configure_mesh()
-            .x_desc("monomer radius R1 (um)")
-            .y_desc(ylab)
-            .x_label_formatter(&sci)
-            .y_label_formatter(&sci)
-            .draw()?;
+        let mut chart = log_log(
+            area,
+            &format!("Figure 7: CO2 monomers, {what}"),
+            0.1..100.0,
+            yr,
+            "monomer radius R1 (um)",
+            ylab,
+        )?;
         if what == "v_frag" {
             chart
                 .draw_series(std::iter::once(Rectangle::new(
@@ -549,12 +531,7 @@ fn fig7(t: &Table, path: &Path) -> Result<(), Error> {
                 .label(label)
                 .legend(legend_line(c));
         }
-        chart
-            .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
-            .border_style(BLACK)
-            .background_style(WHITE.mix(0.9))
-            .draw()?;
+        legend(&mut chart, SeriesLabelPosition::UpperRight)?;
     }
     root.present()?;
     Ok(())

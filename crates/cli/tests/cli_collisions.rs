@@ -1,24 +1,9 @@
 //! The collision commands as a user runs them: JSON contract, files, bad input.
 
+mod common;
+
+use common::{json, run};
 use std::process::Command;
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_stickiness"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let (code, out, err) = run(args);
-    assert_eq!(code, 0, "{args:?}: {err}");
-    serde_json::from_str(&out).expect("one JSON object")
-}
 
 /// Section 4: 3.5, 4.05 and 4.5 cm/s stick, double-collide and bounce (CO2, 60 um, 1e-9 s).
 #[test]

@@ -1,24 +1,8 @@
 //! The `stickiness` command as a user runs it: JSON contract, defaults, bad input.
 
-use std::process::Command;
+mod common;
 
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_stickiness"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
-
-fn json(args: &[&str]) -> serde_json::Value {
-    let (code, out, err) = run(args);
-    assert_eq!(code, 0, "{err}");
-    serde_json::from_str(&out).expect("one JSON object")
-}
+use common::{json, run};
 
 /// Defaults are the paper's CO2 case (R1 = 60 um): V_stick,JKR = 1.66e-2 m/s (Section 5.1).
 #[test]

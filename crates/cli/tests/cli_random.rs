@@ -2,7 +2,9 @@
 //! infinity, exits with 0, 1 (computation failed) or 2 (usage), and with --json prints exactly one
 //! JSON object on success. Results are identical between reruns.
 
-use std::process::Command;
+mod common;
+
+use common::run;
 
 /// xorshift64*: a fixed, dependency-free sequence so the test is reproducible.
 struct Rng(u64);
@@ -23,18 +25,6 @@ const ODD: [&str; 22] = [
     "0", "-1", "1e-300", "1e300", "nan", "NaN", "inf", "-inf", "abc", "", "1e-9", "0.5", "60e-6",
     "1e-2", "0.01", "0.99", "1", "2", "-0", "1e-16", "1e-6", "3.5e-2",
 ];
-
-fn run(args: &[String]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_stickiness"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
-}
 
 #[test]
 fn random_arguments_never_panic_or_print_nan() {
