@@ -54,7 +54,7 @@ impl From<ContactError> for CliError {
                 allowed,
                 unit,
             } => CliError::Usage(format!(
-                "{} = {value} is outside the allowed range {allowed} ({unit})",
+                "{} = {value:?} is outside the allowed range {allowed} ({unit})",
                 flag_of(field)
             )),
             other => CliError::Usage(other.to_string()),
@@ -66,10 +66,10 @@ impl From<GreenwoodError> for CliError {
     fn from(e: GreenwoodError) -> Self {
         match e {
             GreenwoodError::KOutOfRange { k } => {
-                CliError::Usage(format!("--k = {k} is outside the allowed range 0 < k < 1"))
+                CliError::Usage(format!("--k = {k:?} is outside the allowed range 0 < k < 1"))
             }
             GreenwoodError::BetaOutOfRange { beta, min, max, .. } => CliError::Usage(format!(
-                "--beta = {beta} is outside the allowed range {min} < beta < {max} (k < beta < 1/k)"
+                "--beta = {beta:?} is outside the allowed range {min:?} < beta < {max:?} (k < beta < 1/k)"
             )),
             other => CliError::Compute(other.to_string()),
         }
@@ -78,7 +78,7 @@ impl From<GreenwoodError> for CliError {
 
 fn out_of_range(field: &str, value: f64, allowed: &str, unit: &str) -> CliError {
     CliError::Usage(format!(
-        "{} = {value} is outside the allowed range {allowed} ({unit})",
+        "{} = {value:?} is outside the allowed range {allowed} ({unit})",
         flag_of(field)
     ))
 }

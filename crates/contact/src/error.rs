@@ -4,7 +4,7 @@
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ContactError {
     /// A parameter is non-finite or outside its physical range.
-    #[error("{field} = {value} is outside the allowed range {allowed} ({unit})")]
+    #[error("{field} = {value:?} is outside the allowed range {allowed} ({unit})")]
     OutOfRange {
         /// Name of the parameter, as in the material file and the CLI (`young`, `radius`, ...).
         field: &'static str,

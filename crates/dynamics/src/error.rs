@@ -13,7 +13,7 @@ pub enum DynamicsError {
     #[error(transparent)]
     Greenwood(#[from] GreenwoodError),
     /// A collision parameter is outside its allowed range.
-    #[error("{field} = {value} is outside the allowed range {allowed} ({unit})")]
+    #[error("{field} = {value:?} is outside the allowed range {allowed} ({unit})")]
     OutOfRange {
         /// Parameter name (`t_vis`, `v_in`, `eps`, `rtol`, ...).
         field: &'static str,
@@ -25,7 +25,7 @@ pub enum DynamicsError {
         unit: &'static str,
     },
     /// The ODE solver failed.
-    #[error("ODE solver failed at R1 = {r1} m, T_vis = {t_vis} s, V_in = {v_in} m/s, after t = {t} s with a = {a} m, delta = {delta} m, delta_dot = {delta_dot} m/s, beta = {beta}: {message}")]
+    #[error("ODE solver failed at R1 = {r1:?} m, T_vis = {t_vis:?} s, V_in = {v_in:?} m/s, after t = {t:?} s with a = {a:?} m, delta = {delta:?} m, delta_dot = {delta_dot:?} m/s, beta = {beta:?}: {message}")]
     Solver {
         /// Particle radius (m).
         r1: f64,
@@ -47,7 +47,7 @@ pub enum DynamicsError {
         message: String,
     },
     /// Neither the end of contact nor a sticking criterion was reached within the step budget.
-    #[error("no outcome after {steps} solver steps at R1 = {r1} m, T_vis = {t_vis} s, V_in = {v_in} m/s (raise max_steps)")]
+    #[error("no outcome after {steps} solver steps at R1 = {r1:?} m, T_vis = {t_vis:?} s, V_in = {v_in:?} m/s (raise max_steps)")]
     Undecided {
         /// Particle radius (m).
         r1: f64,

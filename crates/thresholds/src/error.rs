@@ -9,7 +9,7 @@ pub enum ThresholdsError {
     #[error(transparent)]
     Dynamics(#[from] DynamicsError),
     /// A parameter is outside its allowed range.
-    #[error("{field} = {value} is outside the allowed range {allowed} ({unit})")]
+    #[error("{field} = {value:?} is outside the allowed range {allowed} ({unit})")]
     OutOfRange {
         /// Parameter name.
         field: &'static str,
@@ -25,7 +25,7 @@ pub enum ThresholdsError {
     Internal(String),
     /// No sticking collision was found down to the lower end of the search.
     #[error(
-        "no sticking collision at or above {v_min} m/s (T_vis = {t_vis} s): the grains never stick"
+        "no sticking collision at or above {v_min:?} m/s (T_vis = {t_vis:?} s): the grains never stick"
     )]
     NoSticking {
         /// Lowest impact speed tried (m/s).

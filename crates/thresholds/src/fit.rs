@@ -5,7 +5,7 @@
 //! and the Illinois variant of regula falsi. A measured value at or below V_stick,JKR needs no
 //! dissipation at all: its T_vis is 0.
 
-use crate::stick::{sticking_thresholds, SearchOptions};
+use crate::stick::{sticking_thresholds, SearchOptions, V_SEARCH_LIMIT};
 use crate::ThresholdsError;
 use contact::Contact;
 use greenwood::CrackLaw;
@@ -33,11 +33,11 @@ pub fn t_vis_for_v_stick(
     v_target: f64,
     opts: &SearchOptions,
 ) -> Result<f64, ThresholdsError> {
-    if !(v_target.is_finite() && v_target > 0.0) {
+    if !(v_target > 0.0 && v_target <= 0.5 * V_SEARCH_LIMIT) {
         return Err(ThresholdsError::OutOfRange {
             field: "v_stick",
             value: v_target,
-            allowed: "> 0 and finite",
+            allowed: "0 < v_stick <= 5e3",
             unit: "m/s",
         });
     }
@@ -45,7 +45,12 @@ pub fn t_vis_for_v_stick(
         return Ok(0.0);
     }
     let opts = SearchOptions {
-        v_max: Some(opts.v_max.unwrap_or(0.0).max(2.0 * v_target)),
+        v_max: Some(
+            opts.v_max
+                .unwrap_or(0.0)
+                .max(2.0 * v_target)
+                .min(V_SEARCH_LIMIT),
+        ),
         ..*opts
     };
     // f(u) = ln V_stick(e^u) - ln v_target; "no bouncing below v_max" means V_stick > v_target.

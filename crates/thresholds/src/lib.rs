@@ -27,4 +27,4 @@ pub mod stick;
 pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit};
 pub use laws::{v_frag, TVisLaw, V_FRAG_FACTOR};
-pub use stick::{sticking_thresholds, SearchOptions, StickingThresholds};
+pub use stick::{sticking_thresholds, SearchOptions, StickingThresholds, V_SEARCH_LIMIT};

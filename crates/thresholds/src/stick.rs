@@ -18,13 +18,18 @@ use contact::Contact;
 use dynamics::{Collider, Outcome, SolverOptions};
 use greenwood::CrackLaw;
 
+/// Highest impact speed any search integrates (m/s): 10 km/s is far above the collision speeds
+/// of dust and ice grains (tens of m/s) and far beyond where contact mechanics applies.
+pub const V_SEARCH_LIMIT: f64 = 1e4;
+
 /// Settings of a threshold search.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SearchOptions {
     /// Relative width of the final bisection bracket (dimensionless).
     pub rel_tol: f64,
-    /// Highest impact speed tried (m/s); `None` means 1000 V_stick,JKR. Without bouncing below it the
-    /// result says so instead of returning a number.
+    /// Highest impact speed tried (m/s, at most [`V_SEARCH_LIMIT`]); `None` means 1000 V_stick,JKR
+    /// (at most [`V_SEARCH_LIMIT`]). Without bouncing below it the result says so instead of
+    /// returning a number.
     pub v_max: Option<f64>,
     /// Settings of each collision; the default is [`SearchOptions::default_solver`].
     pub solver: SolverOptions,
@@ -135,11 +140,11 @@ fn check_options(opts: &SearchOptions) -> Result<(), ThresholdsError> {
         });
     }
     if let Some(v) = opts.v_max {
-        if !(v.is_finite() && v > 0.0) {
+        if !(v > 0.0 && v <= V_SEARCH_LIMIT) {
             return Err(ThresholdsError::OutOfRange {
                 field: "v_max",
                 value: v,
-                allowed: "> 0 and finite",
+                allowed: "0 < v_max <= 1e4",
                 unit: "m/s",
             });
         }
@@ -161,7 +166,7 @@ pub fn sticking_thresholds(
 ) -> Result<StickingThresholds, ThresholdsError> {
     check_options(opts)?;
     let v_jkr = contact.v_stick_jkr();
-    let v_max = opts.v_max.unwrap_or(1000.0 * v_jkr);
+    let v_max = opts.v_max.unwrap_or((1000.0 * v_jkr).min(V_SEARCH_LIMIT));
     if t_vis == 0.0 {
         return Ok(StickingThresholds {
             t_vis,
