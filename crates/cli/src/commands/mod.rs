@@ -31,7 +31,7 @@ pub struct SearchArgs {
     /// Relative tolerance of the bisections (dimensionless).
     #[arg(long, default_value_t = 1e-6, allow_hyphen_values = true)]
     pub rel_tol: f64,
-    /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR).
+    /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; at most 1e4).
     #[arg(long, allow_hyphen_values = true)]
     pub v_max: Option<f64>,
 }
