@@ -7,7 +7,7 @@ use dynamics::{Collider, Outcome, SolverOptions};
 use greenwood::CrackLaw;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
-use thresholds::{fit_t_vis, sticking_thresholds, v_frag, SearchOptions, TVisLaw};
+use thresholds::{fit_t_vis, sticking_thresholds, sweep_t_vis, v_frag, SearchOptions, TVisLaw};
 
 /// Any failure while computing a figure.
 pub type Error = Box<dyn std::error::Error + Send + Sync>;
@@ -272,17 +272,14 @@ pub fn figure4(res: Resolution, progress: Progress) -> Result<Vec<Table>, Error>
         .map(|&k| CrackLaw::new(k))
         .collect::<Result<Vec<_>, _>>()?;
     let t_vis = logspace(1e-12, 1e-8, res.pick(33, 3));
+    // one sweep over T_vis per k (each search seeded by its neighbour), the k in parallel
+    let sweeps = par_map("fig4", &laws, progress, |law| {
+        Ok(sweep_t_vis(&c, law, &t_vis, &SearchOptions::default())?)
+    })?;
     let jobs: Vec<(usize, f64)> = (0..KS.len())
         .flat_map(|i| t_vis.iter().map(move |&t| (i, t)))
         .collect();
-    let ths = par_map("fig4", &jobs, progress, |&(i, t)| {
-        Ok(sticking_thresholds(
-            &c,
-            &laws[i],
-            t,
-            &SearchOptions::default(),
-        )?)
-    })?;
+    let ths: Vec<_> = sweeps.into_iter().flatten().collect();
     let mut t = Table::new(
         "fig4.csv",
         vec![
@@ -309,11 +306,8 @@ pub fn figure4(res: Resolution, progress: Progress) -> Result<Vec<Table>, Error>
 pub fn figure5(res: Resolution, progress: Progress) -> Result<Vec<Table>, Error> {
     let law = CrackLaw::new(K)?;
     let t_vis = logspace(1e-12, 1e-7, res.pick(41, 3));
-    let jobs: Vec<(f64, f64)> = GAMMAS_H2O
-        .iter()
-        .flat_map(|&g| t_vis.iter().map(move |&t| (g, t)))
-        .collect();
-    let ths = par_map("fig5", &jobs, progress, |&(g, t)| {
+    // one sweep over T_vis per gamma_SV (each search seeded by its neighbour), in parallel
+    let sweeps = par_map("fig5", &GAMMAS_H2O, progress, |&g| {
         let c = Contact::new(
             Material {
                 gamma_sv: g,
@@ -321,8 +315,13 @@ pub fn figure5(res: Resolution, progress: Progress) -> Result<Vec<Table>, Error>
             },
             R1_H2O,
         )?;
-        Ok(sticking_thresholds(&c, &law, t, &SearchOptions::default())?)
+        Ok(sweep_t_vis(&c, &law, &t_vis, &SearchOptions::default())?)
     })?;
+    let jobs: Vec<(f64, f64)> = GAMMAS_H2O
+        .iter()
+        .flat_map(|&g| t_vis.iter().map(move |&t| (g, t)))
+        .collect();
+    let ths: Vec<_> = sweeps.into_iter().flatten().collect();
     let mut t = Table::new(
         "fig5.csv",
         vec![

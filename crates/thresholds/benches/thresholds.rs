@@ -1,11 +1,12 @@
 //! V_stick searches (both transitions, relative tolerance 1e-6) for the three reference cases of
-//! the Speed issue, and a Figure-4-like sweep (2 k x 11 T_vis). `cargo bench -p thresholds`.
+//! the Speed issue, and a Figure-4-like sweep (2 k x 11 T_vis, each search seeded by its
+//! neighbour). `cargo bench -p thresholds`.
 
 use contact::{Contact, Material};
 use criterion::{criterion_group, criterion_main, Criterion};
 use greenwood::CrackLaw;
 use std::hint::black_box;
-use thresholds::{sticking_thresholds, SearchOptions};
+use thresholds::{sticking_thresholds, sweep_t_vis, SearchOptions};
 
 fn v_stick(c: &mut Criterion) {
     let law = CrackLaw::new(0.01).expect("k in range");
@@ -24,14 +25,14 @@ fn v_stick(c: &mut Criterion) {
         });
     }
     group.sample_size(10);
+    let t_vis: Vec<f64> = (0..11)
+        .map(|i| 1e-12 * 10f64.powf(i as f64 * 0.4))
+        .collect();
     group.bench_function("sweep_2k_x_11t_vis", |b| {
         b.iter(|| {
             for k in [0.01, 0.02] {
                 let law = CrackLaw::new(k).expect("k in range");
-                for i in 0..11 {
-                    let t_vis = 1e-12 * 10f64.powf(i as f64 * 0.4);
-                    black_box(sticking_thresholds(&co2, &law, t_vis, &opts).ok());
-                }
+                black_box(sweep_t_vis(&co2, &law, &t_vis, &opts).ok());
             }
         })
     });

@@ -15,7 +15,8 @@
 //! for its uncertainty (Sections 5.1-5.2).
 //!
 //! ## Map
-//! - [`stick`]: [`sticking_thresholds`] by bracketing and two bisections, capped at `v_max`.
+//! - [`stick`]: [`sticking_thresholds`] by bracketing, regula falsi and bisection, capped at
+//!   `v_max`; [`sweep_t_vis`] chains searches over T_vis with hints from the neighbours.
 //! - [`fit`]: [`fit_t_vis`], the inverse problem.
 //! - [`laws`]: [`TVisLaw`] and [`v_frag`].
 
@@ -27,4 +28,6 @@ pub mod stick;
 pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit};
 pub use laws::{v_frag, TVisLaw, V_FRAG_FACTOR};
-pub use stick::{sticking_thresholds, SearchOptions, StickingThresholds, V_SEARCH_LIMIT};
+pub use stick::{
+    sticking_thresholds, sweep_t_vis, Hint, SearchOptions, StickingThresholds, V_SEARCH_LIMIT,
+};

@@ -35,6 +35,29 @@ pub struct SearchOptions {
     pub solver: SolverOptions,
     /// Integrate the two collisions of each round on two threads (the result is the same).
     pub parallel: bool,
+    /// Thresholds expected from a neighbouring point of a sweep (m/s): the first round tries
+    /// just below `v_double_onset` and just above `v_stick` instead of bracketing from
+    /// V_stick,JKR. A wrong hint costs one round, never the result.
+    pub hint: Option<Hint>,
+}
+
+/// Expected thresholds, from a neighbouring point of a sweep (m/s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hint {
+    /// Expected V_double_onset (m/s).
+    pub v_double_onset: f64,
+    /// Expected V_stick (m/s).
+    pub v_stick: f64,
+}
+
+impl StickingThresholds {
+    /// This result as the hint for a neighbouring point (`None` without both thresholds).
+    pub fn as_hint(&self) -> Option<Hint> {
+        Some(Hint {
+            v_double_onset: self.v_double_onset?,
+            v_stick: self.v_stick?,
+        })
+    }
 }
 
 impl SearchOptions {
@@ -57,6 +80,7 @@ impl Default for SearchOptions {
             v_max: None,
             solver: Self::default_solver(),
             parallel: true,
+            hint: None,
         }
     }
 }
@@ -195,9 +219,18 @@ pub fn sticking_thresholds(
     let v_floor = 1e-6 * v_jkr;
 
     // Lower bracket: a sticking collision. V_stick >= V_stick,JKR, so start just below it (and
-    // try 1.6 V_stick,JKR towards the upper bracket in the same round).
+    // try 1.6 V_stick,JKR towards the upper bracket in the same round), or around a hint.
     let mut v = (0.99 * v_jkr).min(0.5 * v_max);
-    round([v, (1.6 * v).min(v_max)], &mut seen)?;
+    let hinted = opts.hint.filter(|h| {
+        h.v_double_onset > 0.0 && h.v_stick >= h.v_double_onset && h.v_stick * 1.02 <= v_max
+    });
+    match hinted {
+        Some(h) => round([0.98 * h.v_double_onset, 1.02 * h.v_stick], &mut seen)?,
+        None => round([v, (1.6 * v).min(v_max)], &mut seen)?,
+    }
+    if hinted.is_some() && !seen.has(|o| o == Outcome::Sticking) {
+        round([v, 0.5 * v], &mut seen)?;
+    }
     while !seen.has(|o| o == Outcome::Sticking) {
         v *= 0.25;
         if v < v_floor {
@@ -295,4 +328,25 @@ fn regula_falsi_point(seen: &Seen, (lo, hi): (Option<f64>, Option<f64>), tol: f6
     };
     let margin = 0.25 * tol * hi;
     v.clamp(lo + margin, hi - margin)
+}
+
+/// `sticking_thresholds` over a sequence of relaxation times (s), each search started from the
+/// previous point's thresholds (see [`SearchOptions::hint`]). Use an increasing or decreasing
+/// sequence: neighbours then have close thresholds.
+pub fn sweep_t_vis(
+    contact: &Contact,
+    law: &CrackLaw,
+    t_vis: &[f64],
+    opts: &SearchOptions,
+) -> Result<Vec<StickingThresholds>, ThresholdsError> {
+    let mut out: Vec<StickingThresholds> = Vec::with_capacity(t_vis.len());
+    for &t in t_vis {
+        let hint = out.last().and_then(StickingThresholds::as_hint);
+        let o = SearchOptions {
+            hint: hint.or(opts.hint),
+            ..*opts
+        };
+        out.push(sticking_thresholds(contact, law, t, &o)?);
+    }
+    Ok(out)
 }

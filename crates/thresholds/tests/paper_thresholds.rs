@@ -3,7 +3,9 @@
 use contact::{Contact, Material};
 use dynamics::{Method, SolverOptions};
 use greenwood::CrackLaw;
-use thresholds::{fit_t_vis, sticking_thresholds, v_frag, SearchOptions, TVisLaw};
+use thresholds::{
+    fit_t_vis, sticking_thresholds, sweep_t_vis, v_frag, Hint, SearchOptions, TVisLaw,
+};
 
 fn co2(r1: f64) -> Contact {
     Contact::new(Material::co2(), r1).unwrap()
@@ -258,4 +260,39 @@ fn parallel_rounds_are_deterministic() {
     let (a, b) = (run(true), run(false));
     assert_eq!(a, b);
     assert_eq!(a, run(true));
+}
+
+/// A sweep seeded by its neighbours finds the same thresholds (within the bisection tolerance)
+/// with fewer collisions; a wrong hint costs collisions, not accuracy.
+#[test]
+fn hinted_sweep_agrees_with_independent_searches() {
+    let c = co2(60e-6);
+    let law = law();
+    let t_vis: Vec<f64> = (0..6).map(|i| 1e-11 * 10f64.powf(0.5 * i as f64)).collect();
+    let opts = SearchOptions::default();
+    let swept = sweep_t_vis(&c, &law, &t_vis, &opts).unwrap();
+    let (mut n_swept, mut n_alone) = (0, 0);
+    for (t, s) in t_vis.iter().zip(&swept) {
+        let alone = sticking_thresholds(&c, &law, *t, &opts).unwrap();
+        for (a, b) in [
+            (s.v_stick, alone.v_stick),
+            (s.v_double_onset, alone.v_double_onset),
+        ] {
+            let (a, b) = (a.unwrap(), b.unwrap());
+            assert!((a / b - 1.0).abs() < 2e-6, "T_vis {t}: {a} vs {b}");
+        }
+        n_swept += s.collisions;
+        n_alone += alone.collisions;
+    }
+    assert!(n_swept < n_alone, "{n_swept} >= {n_alone}");
+    let wrong = SearchOptions {
+        hint: Some(Hint {
+            v_double_onset: 1.0,
+            v_stick: 2.0,
+        }),
+        ..Default::default()
+    };
+    let th = sticking_thresholds(&c, &law, 1e-9, &wrong).unwrap();
+    let right = sticking_thresholds(&c, &law, 1e-9, &opts).unwrap();
+    assert!((th.v_stick.unwrap() / right.v_stick.unwrap() - 1.0).abs() < 2e-6);
 }
