@@ -24,6 +24,8 @@
 //! Materials (Section 3): [`Material::co2`] (E and nu from sound speeds) and [`Material::h2o`], or
 //! a JSON file with the fields `gamma_sv`, `young`, `poisson`, `density`.
 
+#![warn(missing_docs)]
+
 pub mod error;
 pub mod material;
 pub mod sphere;

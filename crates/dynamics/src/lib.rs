@@ -15,6 +15,8 @@
 //! nondimensional variables and pseudo-time described in [`model`]. Sticking is decided by the
 //! energy bound and oscillation criteria described in [`collision`].
 
+#![warn(missing_docs)]
+
 pub mod collision;
 pub mod error;
 pub mod model;

@@ -29,6 +29,8 @@
 //!
 //! Everything here is dimensionless.
 
+#![warn(missing_docs)]
+
 pub mod error;
 pub mod integrals;
 pub mod law;

@@ -20,6 +20,8 @@
 //! - [`fit`]: [`fit_t_vis`], the inverse problem.
 //! - [`laws`]: [`TVisLaw`] and [`v_frag`].
 
+#![warn(missing_docs)]
+
 pub mod error;
 pub mod fit;
 pub mod laws;
