@@ -73,3 +73,41 @@ fn bad_input_names_the_flag_and_range() {
     assert_eq!(code, 2);
     assert!(err.contains("co2, h2o") && err.contains("JSON"), "{err}");
 }
+
+/// A material file with the four SI constants works like a preset (H2O of Section 5.2 here);
+/// a missing or unknown field is named.
+#[test]
+fn material_from_json_file() {
+    let dir = std::env::temp_dir().join(format!("stickiness-material-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let good = dir.join("ice.json");
+    std::fs::write(
+        &good,
+        r#"{"gamma_sv": 0.1, "young": 7e9, "poisson": 0.25, "density": 930}"#,
+    )
+    .unwrap();
+    let from_file = json(&[
+        "jkr",
+        "--material",
+        good.to_str().unwrap(),
+        "--radius",
+        "90e-6",
+        "--json",
+    ]);
+    let preset = json(&["jkr", "--material", "h2o", "--radius", "90e-6", "--json"]);
+    assert_eq!(from_file, preset);
+    let bad = dir.join("bad.json");
+    std::fs::write(&bad, r#"{"gamma_sv": 0.1, "young": 7e9, "density": 930}"#).unwrap();
+    let (code, _, err) = run(&["jkr", "--material", bad.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("poisson"), "{err}");
+    std::fs::write(
+        &bad,
+        r#"{"gamma_sv": 0.1, "young": 7e9, "poisson": 0.25, "density": 930, "color": 1}"#,
+    )
+    .unwrap();
+    let (code, _, err) = run(&["jkr", "--material", bad.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(err.contains("color"), "{err}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
