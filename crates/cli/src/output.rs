@@ -62,9 +62,7 @@ impl Report {
         let mut out = format!("{}\n", self.title);
         for (k, v, unit) in &self.rows {
             let shown = match v {
-                Value::Number(n) => n
-                    .as_f64()
-                    .map_or_else(|| n.to_string(), |x| format!("{x:.6e}")),
+                Value::Number(n) => n.as_f64().map_or_else(|| n.to_string(), significant),
                 Value::String(s) => s.clone(),
                 Value::Null => "none".into(),
                 other => other.to_string(),
@@ -84,5 +82,34 @@ impl Report {
         } else {
             print!("{}", self.to_human());
         }
+    }
+}
+
+/// `x` with 7 significant figures: fixed notation for 1e-3 <= |x| < 1e5, scientific otherwise.
+fn significant(x: f64) -> String {
+    if x == 0.0 {
+        return "0".into();
+    }
+    let exponent = x.abs().log10().floor();
+    if (-3.0..5.0).contains(&exponent) {
+        let decimals = (6.0 - exponent).max(0.0) as usize;
+        format!("{x:.decimals$}")
+    } else {
+        format!("{x:.6e}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::significant;
+
+    #[test]
+    fn seven_significant_figures() {
+        assert_eq!(significant(9.517010630424188), "9.517011");
+        assert_eq!(significant(0.01659400272627634), "0.01659400");
+        assert_eq!(significant(7.076616500642095e-7), "7.076617e-7");
+        assert_eq!(significant(0.0), "0");
+        assert_eq!(significant(-0.5947867075549149), "-0.5947867");
+        assert_eq!(significant(1234.5678), "1234.568");
     }
 }

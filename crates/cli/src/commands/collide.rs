@@ -44,7 +44,7 @@ pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
         })?;
     }
     let mut r = Report::new(format!(
-        "Collision of two {} spheres, R1 = {} m, T_vis = {} s, V_in = {} m/s, k = {}",
+        "Collision of two {} spheres, R1 = {:?} m, T_vis = {:?} s, V_in = {:?} m/s, k = {:?}",
         args.material.material, args.material.radius, args.t_vis, args.v_in, args.k.k
     ));
     r.warn_about(&contact);
@@ -78,7 +78,7 @@ fn write_trajectory(
     )?;
     writeln!(
         f,
-        "# material = {}, radius = {} m, t_vis = {} s, v_in = {} m/s, k = {}",
+        "# material = {}, radius = {:?} m, t_vis = {:?} s, v_in = {:?} m/s, k = {:?}",
         args.material.material, args.material.radius, args.t_vis, args.v_in, args.k.k
     )?;
     writeln!(f, "# outcome = {}", c.outcome.as_str())?;

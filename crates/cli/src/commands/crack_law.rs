@@ -20,7 +20,7 @@ pub struct CrackLawArgs {
 pub fn run(args: &CrackLawArgs) -> Result<Report, CliError> {
     let point = greenwood::alpha_of_beta(args.k, args.beta)?;
     let mut r = Report::new(format!(
-        "Greenwood crack law at k = {}, beta = {}",
+        "Greenwood crack law at k = {:?}, beta = {:?}",
         args.k, args.beta
     ));
     r.number("k", args.k, "")?;

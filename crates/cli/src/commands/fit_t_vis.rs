@@ -41,7 +41,7 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
         &args.search.options(),
     )?;
     let mut r = Report::new(format!(
-        "Relaxation time for V_stick = {} ± {} m/s, two {} spheres, R1 = {} m, k = {}",
+        "Relaxation time for V_stick = {:?} ± {:?} m/s, two {} spheres, R1 = {:?} m, k = {:?}",
         args.v_stick, args.v_stick_err, args.material.material, args.material.radius, args.k.k
     ));
     r.warn_about(&contact);

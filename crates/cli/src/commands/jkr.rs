@@ -16,7 +16,7 @@ pub struct JkrArgs {
 pub fn run(args: &JkrArgs) -> Result<Report, CliError> {
     let c = args.material.contact()?;
     let mut r = Report::new(format!(
-        "JKR contact of two {} spheres, R1 = {} m",
+        "JKR contact of two {} spheres, R1 = {:?} m",
         args.material.material, args.material.radius
     ));
     r.warn_about(&c);

@@ -43,7 +43,7 @@ pub fn run(args: &VFragArgs) -> Result<Report, CliError> {
     let law = args.k.crack_law()?;
     let th = thresholds::sticking_thresholds(&contact, &law, t_vis, &args.search.options())?;
     let mut r = Report::new(format!(
-        "Fragmentation velocity of aggregates of {} monomers, R1 = {} m, T_vis = {t_vis} s, k = {}",
+        "Fragmentation velocity of aggregates of {} monomers, R1 = {:?} m, T_vis = {t_vis:?} s, k = {:?}",
         args.material.material, args.material.radius, args.k.k
     ));
     r.warn_about(&contact);

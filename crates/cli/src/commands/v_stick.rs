@@ -28,7 +28,7 @@ pub fn run(args: &VStickArgs) -> Result<Report, CliError> {
     let law = args.k.crack_law()?;
     let th = thresholds::sticking_thresholds(&contact, &law, args.t_vis, &args.search.options())?;
     let mut r = Report::new(format!(
-        "Sticking thresholds of two {} spheres, R1 = {} m, T_vis = {} s, k = {}",
+        "Sticking thresholds of two {} spheres, R1 = {:?} m, T_vis = {:?} s, k = {:?}",
         args.material.material, args.material.radius, args.t_vis, args.k.k
     ));
     r.warn_about(&contact);
