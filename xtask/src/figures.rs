@@ -147,7 +147,7 @@ pub fn figure2(res: Resolution, progress: Progress) -> Result<Vec<Table>, Error>
             "Figure 2: head-on collisions in the delta-a and delta-delta_dot planes (Section 4)"
                 .into(),
             material_line("co2", &m),
-            format!("radius = {R1_CO2} m, t_vis = {t_vis} s, k = {K}, eps = 0.01"),
+            format!("radius = {R1_CO2} m, t_vis = {t_vis} s, k = {K}, eps = {}", dynamics::EPS),
             format!(
                 "JKR equilibrium: a_eq = {:e} m, delta_eq = {:e} m, delta_dot = 0",
                 c.a_eq(),

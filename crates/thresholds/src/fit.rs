@@ -129,6 +129,14 @@ pub fn fit_t_vis(
     v_stick_err: f64,
     opts: &SearchOptions,
 ) -> Result<TVisFit, ThresholdsError> {
+    if !(v_stick > 0.0 && v_stick <= 0.5 * V_SEARCH_LIMIT) {
+        return Err(ThresholdsError::OutOfRange {
+            field: "v_stick",
+            value: v_stick,
+            allowed: "0 < v_stick <= 5e3",
+            unit: "m/s",
+        });
+    }
     if !(v_stick_err.is_finite() && v_stick_err >= 0.0 && v_stick_err < v_stick) {
         return Err(ThresholdsError::OutOfRange {
             field: "v_stick_err",

@@ -27,12 +27,6 @@ pub struct FitTVisArgs {
 pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
     let contact = args.material.contact()?;
     let law = args.k.crack_law()?;
-    if !args.v_stick.is_finite() || args.v_stick <= 0.0 {
-        return Err(CliError::Usage(format!(
-            "--v-stick = {} is outside the allowed range > 0 and finite (m/s)",
-            args.v_stick
-        )));
-    }
     let fit = thresholds::fit_t_vis(
         &contact,
         &law,
