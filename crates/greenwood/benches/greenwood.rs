@@ -1,6 +1,8 @@
 //! Crack-law evaluation: the table lookup the ODE calls at every right-hand side, the table
 //! build, and one direct inversion for comparison. `cargo bench -p greenwood`.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use criterion::{criterion_group, criterion_main, Criterion};
 use greenwood::{v_direct, CrackLaw};
 use std::hint::black_box;

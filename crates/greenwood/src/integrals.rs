@@ -29,7 +29,7 @@
 use crate::quad::{
     j3_complement_log_term, j3_unchecked, log_term_unchecked, sqrt_moment_unchecked,
 };
-use crate::GreenwoodError;
+use crate::{GreenwoodError, OutOfRange};
 
 /// Values of Appendix A's integrals at one alpha, with the complements needed by the crack law.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -84,7 +84,7 @@ fn check_alpha(alpha: f64) -> Result<(), GreenwoodError> {
     if alpha.is_finite() && alpha > 0.0 {
         Ok(())
     } else {
-        Err(GreenwoodError::AlphaOutOfRange { alpha })
+        Err(OutOfRange::new("alpha", alpha, "> 0 and finite", "dimensionless").into())
     }
 }
 

@@ -17,7 +17,8 @@
 //! closing: 1 - beta = (1-k)(J3 I3 + K) / I2,         beta - k   = (1-k)(k J1 + (1-k)(1-J3)^2) / I2
 //! ```
 
-use crate::{GreenwoodError, JIntegrals};
+use crate::roots::{illinois, Illinois};
+use crate::{GreenwoodError, JIntegrals, OutOfRange};
 use std::f64::consts::FRAC_PI_4;
 
 /// Which branch of the crack law: the crack closes (contact grows) or opens (contact shrinks).
@@ -50,7 +51,7 @@ pub(crate) fn check_k(k: f64) -> Result<(), GreenwoodError> {
     if k.is_finite() && k > 0.0 && k < 1.0 {
         Ok(())
     } else {
-        Err(GreenwoodError::KOutOfRange { k })
+        Err(OutOfRange::new("k", k, "0 < k < 1", "dimensionless").into())
     }
 }
 
@@ -107,12 +108,17 @@ pub(crate) fn check_beta(k: f64, beta: f64) -> Result<(), GreenwoodError> {
     if beta.is_finite() && beta > k && beta < 1.0 / k {
         Ok(())
     } else {
-        Err(GreenwoodError::BetaOutOfRange {
+        Err(OutOfRange::new(
+            "beta",
             beta,
-            k,
-            min: k,
-            max: 1.0 / k,
-        })
+            format!(
+                "{} < beta < {} (k < beta < 1/k)",
+                crate::format::number(k),
+                crate::format::number(1.0 / k)
+            ),
+            "dimensionless",
+        )
+        .into())
     }
 }
 
@@ -126,64 +132,48 @@ pub(crate) fn zeta_of_beta(k: f64, beta: f64) -> (Branch, f64) {
     }
 }
 
+/// Bracket of the inversion in `ln alpha`: alpha in `[1e-60, 1e60]` contains every beta
+/// representable in f64 strictly inside `(k, 1/k)`.
+const LN_ALPHA_BRACKET: f64 = 60.0 * std::f64::consts::LN_10;
+
 /// Direct inversion: the alpha at which the crack law passes through `beta` (k < beta < 1/k).
 ///
 /// Returns `None` for `beta == 1`, which corresponds to alpha = infinity (v = 0). Solves
-/// `zeta(alpha) = zeta(beta)` by the Illinois variant of regula falsi in `ln alpha`, bracketed
-/// in `[1e-60, 1e60]`, which contains every beta representable in f64 strictly inside the range.
+/// `zeta(alpha) = zeta(beta)` with [`crate::roots::illinois`] in `ln alpha` over
+/// `[-LN_ALPHA_BRACKET, LN_ALPHA_BRACKET]`.
+///
+/// # Example
+/// ```
+/// // v(k, beta) is positive below beta = 1 (the contact grows) and negative above (Figure 1)
+/// let p = greenwood::alpha_of_beta(0.01, 0.5).unwrap().unwrap();
+/// assert!(p.v > 0.0 && (p.beta - 0.5).abs() < 1e-12);
+/// assert!(greenwood::alpha_of_beta(0.01, 1.0).unwrap().is_none());
+/// ```
 pub fn alpha_of_beta(k: f64, beta: f64) -> Result<Option<CrackPoint>, GreenwoodError> {
     check_beta(k, beta)?;
     if beta == 1.0 {
         return Ok(None);
     }
     let (branch, target) = zeta_of_beta(k, beta);
-    // zeta decreases with alpha on both branches (from +inf at alpha -> 0 to -inf at alpha -> inf).
-    let f = |u: f64| -> Result<(CrackPoint, f64), GreenwoodError> {
-        let p = CrackPoint::new(k, u.exp(), branch)?;
-        let z = p.zeta();
-        Ok((p, z - target))
+    // zeta decreases with alpha on both branches (from +inf at alpha -> 0 to -inf at alpha -> inf)
+    let f = |u: f64| -> Result<f64, GreenwoodError> {
+        Ok(CrackPoint::new(k, u.exp(), branch)?.zeta() - target)
     };
-    let (mut lo, mut hi) = (
-        -60.0 * std::f64::consts::LN_10,
-        60.0 * std::f64::consts::LN_10,
-    );
-    let (mut p_lo, mut f_lo) = f(lo)?;
-    let (mut p_hi, mut f_hi) = f(hi)?;
-    if f_lo <= 0.0 {
-        return Ok(Some(p_lo));
-    }
-    if f_hi >= 0.0 {
-        return Ok(Some(p_hi));
-    }
-    let mut side = 0i8;
-    for _ in 0..200 {
-        let u = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
-        let (p, fu) = f(u)?;
-        if fu == 0.0 || (hi - lo) <= 1e-15 * u.abs().max(1.0) {
-            return Ok(Some(p));
-        }
-        if fu > 0.0 {
-            lo = u;
-            f_lo = fu;
-            p_lo = p;
-            if side == 1 {
-                f_hi *= 0.5;
-            }
-            side = 1;
-        } else {
-            hi = u;
-            f_hi = fu;
-            p_hi = p;
-            if side == -1 {
-                f_lo *= 0.5;
-            }
-            side = -1;
-        }
-        if (hi - lo) <= 1e-14 * hi.abs().max(lo.abs()).max(1.0) {
-            break;
-        }
-    }
-    Ok(Some(if f_lo.abs() < f_hi.abs() { p_lo } else { p_hi }))
+    let (lo, hi) = (-LN_ALPHA_BRACKET, LN_ALPHA_BRACKET);
+    let (f_lo, f_hi) = (f(lo)?, f(hi)?);
+    let u = if f_lo <= 0.0 {
+        lo
+    } else if f_hi >= 0.0 {
+        hi
+    } else {
+        let opts = Illinois {
+            // ln alpha to 1e-14 relative: alpha, and hence v, to about 1e-13
+            x_tol: 1e-14 * LN_ALPHA_BRACKET,
+            ..Illinois::default()
+        };
+        illinois(f, (lo, f_lo), (hi, f_hi), &opts)?.best
+    };
+    Ok(Some(CrackPoint::new(k, u.exp(), branch)?))
 }
 
 /// v(k, beta) by direct inversion (slow: several quadratures; use [`crate::CrackLaw`] in loops).

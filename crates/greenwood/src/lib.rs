@@ -19,6 +19,16 @@
 //! ```
 //! - v is defined for `k < beta < 1/k`, with `v(k, 1) = 0`.
 //!
+//! ## Quick start
+//! ```
+//! use greenwood::CrackLaw;
+//! // build the table once per k (the paper's fiducial k = 0.01), then evaluate in ~30 ns
+//! let law = CrackLaw::new(0.01)?;
+//! assert_eq!(law.v(1.0)?, 0.0); // v(k, 1) = 0: the crack is at rest at beta = 1 (Figure 1)
+//! assert!(law.v(0.5)? > 0.0 && law.v(2.0)? < 0.0); // closing below 1, opening above
+//! # Ok::<(), greenwood::GreenwoodError>(())
+//! ```
+//!
 //! ## Map
 //! - [`integrals`]: J1, J2, J3 by tanh-sinh quadrature after substitutions that remove the endpoint
 //!   singularities; the identity `J1 + J2 = 2 (1 - J3)`; `J3 = D(sqrt alpha)/sqrt alpha`.
@@ -26,18 +36,21 @@
 //!   [`v_direct`] for a given beta.
 //! - [`table`]: [`CrackLaw`], built once per k, evaluates `v` and `dv/dbeta` in well under a
 //!   microsecond with a relative error below 1e-8 over alpha in [1e-6, 1e8].
+//! - [`roots`]: the Illinois root finder every search of the workspace uses.
+//! - [`error`]: [`OutOfRange`], the one "bad input" error, wrapped by every crate above;
+//!   [`format`]: the one number format (shortest round-trip, as in JSON).
 //!
 //! Everything here is dimensionless.
 
-#![warn(missing_docs)]
-
 pub mod error;
+pub mod format;
 pub mod integrals;
 pub mod law;
 mod quad;
+pub mod roots;
 pub mod table;
 
-pub use error::GreenwoodError;
+pub use error::{positive, GreenwoodError, OutOfRange};
 pub use integrals::{j1, j2, j3, log_term, JIntegrals};
 pub use law::{alpha_of_beta, v_direct, Branch, CrackPoint};
 pub use table::{CrackLaw, CrackSpeed};

@@ -19,6 +19,7 @@
 use crate::integrals::JIntegrals;
 use crate::law::{check_beta, check_k, zeta_of_beta, Branch, CrackPoint};
 use crate::GreenwoodError;
+use std::sync::Arc;
 
 pub use crate::quad::{ALPHA_MAX, ALPHA_MIN, LN_ALPHA_STEP};
 
@@ -140,18 +141,50 @@ impl BranchTable {
 /// Greenwood's crack law `v(k, beta)` for one k, evaluated by table interpolation.
 ///
 /// Build it once per k (0.17 ms: the quadratures were done at build time) and share it:
-/// evaluation is a bucket lookup and a small polynomial in Newton form (about 30 ns).
+/// evaluation is a bucket lookup and a small polynomial in Newton form (about 30 ns). The tables
+/// sit behind an [`Arc`], so a clone (or `CrackLaw::from(&law)`) shares them instead of copying.
 #[derive(Debug, Clone)]
 pub struct CrackLaw {
     k: f64,
+    tables: Arc<Tables>,
+}
+
+/// The two branches' tables of one k.
+#[derive(Debug)]
+struct Tables {
     closing: BranchTable,
     opening: BranchTable,
+}
+
+impl From<&CrackLaw> for CrackLaw {
+    /// Shares the tables of `law` (a reference-count increment, no copy).
+    fn from(law: &CrackLaw) -> Self {
+        law.clone()
+    }
 }
 
 impl CrackLaw {
     /// Tabulates the crack law for the modulus ratio `k` (dimensionless, 0 < k < 1).
     ///
     /// Cost: a few thousand logarithms; the quadratures were done at build time.
+    ///
+    /// # Example
+    /// ```
+    /// use greenwood::CrackLaw;
+    /// let law = CrackLaw::new(0.01)?;
+    /// // near beta = 1, v changes sign with slope dv/dbeta < 0 (Figure 1, right panel)
+    /// let s = law.speed(0.999)?;
+    /// assert!(s.v > 0.0 && s.dv_dbeta < 0.0);
+    /// // the table agrees with the direct inversion by quadrature (Appendix A) to 1e-8
+    /// let direct = greenwood::v_direct(0.01, 0.3)?;
+    /// assert!((law.v(0.3)? / direct - 1.0).abs() < 1e-8);
+    /// // k outside (0, 1) is refused with a message that names it
+    /// assert_eq!(
+    ///     CrackLaw::new(1.5).unwrap_err().to_string(),
+    ///     "k = 1.5: must be 0 < k < 1 (dimensionless)"
+    /// );
+    /// # Ok::<(), greenwood::GreenwoodError>(())
+    /// ```
     pub fn new(k: f64) -> Result<Self, GreenwoodError> {
         check_k(k)?;
         let mut closing = Vec::with_capacity(J_NODES.len());
@@ -168,8 +201,10 @@ impl CrackLaw {
         }
         Ok(Self {
             k,
-            closing: BranchTable::from_points(closing),
-            opening: BranchTable::from_points(opening),
+            tables: Arc::new(Tables {
+                closing: BranchTable::from_points(closing),
+                opening: BranchTable::from_points(opening),
+            }),
         })
     }
 
@@ -231,7 +266,7 @@ impl CrackLaw {
         let (branch, zeta) = zeta_of_beta(k, beta);
         match branch {
             Branch::Closing => {
-                let (w, dw) = self.closing.eval(zeta);
+                let (w, dw) = self.tables.closing.eval(zeta);
                 let v = w.exp();
                 // zeta = ln(1 - beta) - ln(beta - k)
                 let dzeta = -1.0 / (1.0 - beta) - 1.0 / (beta - k);
@@ -241,7 +276,7 @@ impl CrackLaw {
                 }
             }
             Branch::Opening => {
-                let (w, dw) = self.opening.eval(zeta);
+                let (w, dw) = self.tables.opening.eval(zeta);
                 let v = -w.exp();
                 // zeta = ln(beta - 1) - ln(1/k - beta)
                 let dzeta = 1.0 / (beta - 1.0) + 1.0 / (1.0 / k - beta);

@@ -2,7 +2,11 @@
 //! Source: Arakawa & Krijt (2021) Appendix A and Figure 1 (v > 0 for beta < 1, v < 0 for
 //! beta > 1, v(k, 1) = 0, beta -> k and 1/k with |v| -> infinity as alpha -> 0).
 
-use greenwood::{alpha_of_beta, v_direct, Branch, CrackLaw, CrackPoint, GreenwoodError};
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use greenwood::{
+    alpha_of_beta, v_direct, Branch, CrackLaw, CrackPoint, GreenwoodError, OutOfRange,
+};
 
 const K: f64 = 0.01;
 
@@ -67,14 +71,14 @@ fn out_of_range_is_a_typed_error() {
     for beta in [K, 1.0 / K, 0.0, -1.0, 1e3, f64::NAN] {
         assert!(matches!(
             law.v(beta),
-            Err(GreenwoodError::BetaOutOfRange { .. })
+            Err(GreenwoodError::OutOfRange(OutOfRange { field: "beta", .. }))
         ));
         assert!(v_direct(K, beta).is_err());
     }
     for k in [0.0, 1.0, -0.1, 1.5, f64::NAN] {
         assert!(matches!(
             CrackLaw::new(k),
-            Err(GreenwoodError::KOutOfRange { .. })
+            Err(GreenwoodError::OutOfRange(OutOfRange { field: "k", .. }))
         ));
     }
 }

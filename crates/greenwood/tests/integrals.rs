@@ -2,6 +2,8 @@
 //! Sources: Arakawa & Krijt (2021) Appendix A (definitions); the closed forms are derived in the
 //! doc comment of `greenwood::integrals` and below.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use greenwood::{j1, j2, j3, log_term, JIntegrals};
 
 /// Dawson's integral D(x) = e^{-x^2} ∫_0^x e^{t^2} dt, independently of any quadrature:

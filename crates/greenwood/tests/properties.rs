@@ -1,6 +1,8 @@
 //! Property: v(k, beta) decreases monotonically in beta over (k, 1/k) and has the sign of
 //! 1 - beta (Greenwood 2004; Arakawa & Krijt 2021, Figure 1), for any k.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 use greenwood::CrackLaw;
 use proptest::prelude::*;
 

@@ -1,0 +1,87 @@
+//! The workspace's one number format: shortest round-trip, exactly as in JSON.
+//!
+//! Titles, report bodies, CSV comments and error messages all print numbers with [`number`], so
+//! a value reads the same in a message as in the `--json` output that carries it.
+
+/// `x` in the shortest form that reads back to the same `f64`, as `serde_json` writes it
+/// (`0.00006`, `1e-9`, `60.0`, `1e+16`); `nan`, `inf` and `-inf` for the values JSON cannot hold.
+///
+/// ```
+/// use greenwood::format::number;
+/// assert_eq!(number(60e-6), "0.00006");
+/// assert_eq!(number(1e-9), "1e-9");
+/// assert_eq!(number(0.04), "0.04");
+/// assert_eq!(number(f64::NAN), "nan");
+/// ```
+pub fn number(x: f64) -> String {
+    if x.is_nan() {
+        "nan".into()
+    } else if x.is_infinite() {
+        if x > 0.0 { "inf" } else { "-inf" }.into()
+    } else {
+        // serde_json's own formatter, so that the two can never disagree
+        serde_json::Value::from(x).to_string()
+    }
+}
+
+/// A length (m) in the unit that suits it (nm, um, mm, cm, m), for titles: `60 um`, `10 nm`.
+///
+/// The scaled value is rounded to 12 significant figures before [`number`] prints it, so that
+/// the conversion itself (60e-6 / 1e-6 = 60.00000000000001) adds no digits.
+///
+/// ```
+/// use greenwood::format::length;
+/// assert_eq!(length(60e-6), "60 um");
+/// assert_eq!(length(1.5e-6), "1.5 um");
+/// assert_eq!(length(1e-7), "100 nm");
+/// assert_eq!(length(0.003), "3 mm");
+/// ```
+pub fn length(metres: f64) -> String {
+    const UNITS: [(f64, &str); 5] = [
+        (1.0, "m"),
+        (1e-2, "cm"),
+        (1e-3, "mm"),
+        (1e-6, "um"),
+        (1e-9, "nm"),
+    ];
+    if !metres.is_finite() || metres <= 0.0 {
+        return format!("{} m", number(metres));
+    }
+    let (scale, unit) = UNITS
+        .iter()
+        .copied()
+        .find(|(s, _)| metres >= *s)
+        .unwrap_or(UNITS[UNITS.len() - 1]);
+    let scaled: f64 = format!("{:.11e}", metres / scale)
+        .parse()
+        .unwrap_or(metres / scale);
+    let text = number(scaled);
+    let text = text.strip_suffix(".0").unwrap_or(&text);
+    format!("{text} {unit}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The format is serde_json's: the two agree on values across the whole range.
+    #[test]
+    fn same_as_json() {
+        for x in [
+            6e-5, 1e-5, 1e-4, 0.04, 60.0, 1e15, 1e16, 1e-300, 123456.789, -2.5e-7,
+        ] {
+            assert_eq!(number(x), serde_json::Value::from(x).to_string(), "{x}");
+        }
+        assert_eq!(number(f64::INFINITY), "inf");
+        assert_eq!(number(f64::NEG_INFINITY), "-inf");
+    }
+
+    #[test]
+    fn lengths() {
+        assert_eq!(length(30e-6), "30 um");
+        assert_eq!(length(1e-8), "10 nm");
+        assert_eq!(length(0.01), "1 cm");
+        assert_eq!(length(60.0), "60 m");
+        assert_eq!(length(1e-12), "0.001 nm");
+    }
+}
