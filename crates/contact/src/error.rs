@@ -1,21 +1,15 @@
 //! Typed errors of the contact model.
 
+use greenwood::OutOfRange;
+
 /// Everything that can go wrong when building a material or a contact.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ContactError {
-    /// A parameter is non-finite or outside its physical range.
-    #[error("{field} = {value:?} is outside the allowed range {allowed} ({unit})")]
-    OutOfRange {
-        /// Name of the parameter, as in the material file and the CLI (`young`, `radius`, ...).
-        field: &'static str,
-        /// The rejected value.
-        value: f64,
-        /// The allowed range, human readable (`> 0`, `-1 < nu < 0.5`).
-        allowed: &'static str,
-        /// SI unit of the parameter.
-        unit: &'static str,
-    },
-    /// A material name that is neither a preset nor a readable file.
+    /// A parameter is non-finite or outside its physical range (the field names it: `radius`,
+    /// `radius2`, `young`, ...).
+    #[error(transparent)]
+    OutOfRange(#[from] OutOfRange),
+    /// A material name that is neither a preset nor an existing file.
     #[error("unknown material '{name}': the presets are {presets}; a path to a JSON file with the fields gamma_sv, young, poisson, density (SI units) also works")]
     UnknownMaterial {
         /// The name given.
@@ -23,12 +17,19 @@ pub enum ContactError {
         /// The preset names, comma separated.
         presets: &'static str,
     },
-    /// A material file that cannot be read or parsed (the message names the field).
-    #[error("material file '{path}': {message}")]
+    /// A path to a material file that does not exist.
+    #[error("material file not found: {path}")]
+    MaterialFileNotFound {
+        /// The path given.
+        path: String,
+    },
+    /// A material file that cannot be read or parsed, or that holds a value out of range; the
+    /// message names the field.
+    #[error("{path}: {message}")]
     MaterialFile {
         /// Path of the file.
         path: String,
-        /// What is wrong with it.
+        /// What is wrong with it (`density = -930: must be > 0 and finite (kg/m^3)`).
         message: String,
     },
 }

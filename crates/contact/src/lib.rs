@@ -1,11 +1,26 @@
 //! # contact
 //!
-//! One job: the contact mechanics of two identical adhesive, viscoelastic spheres, as reviewed in
-//! Arakawa & Krijt (2021), Section 2, with the JKR thresholds of Sections 5.1 and 6. This crate
-//! knows nothing about time integration or the crack law; every quantity is SI.
+//! One job: the contact mechanics of two adhesive, viscoelastic bodies of one material, as
+//! reviewed in Arakawa & Krijt (2021), Section 2, with the JKR thresholds of Sections 5.1 and 6.
+//! This crate knows nothing about time integration or the crack law; every quantity is SI.
+//!
+//! ## Quick start
+//! ```
+//! use contact::{Contact, Geometry, Material};
+//! // the paper's CO2 grains: two identical spheres of R1 = 60 um
+//! let c = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+//! assert!((c.v_stick_jkr() - 1.66e-2).abs() < 5e-5); // Section 5.1: 1.66e-2 m/s
+//! // a 60 um grain on a CO2 wall, or a 60 um grain meeting a 30 um one
+//! let wall = Contact::new(Material::co2(), Geometry::wall(60e-6))?;
+//! let pair = Contact::new(Material::co2(), Geometry::spheres(60e-6, 30e-6))?;
+//! assert!(wall.v_stick_jkr() > c.v_stick_jkr() && pair.v_stick_jkr() > c.v_stick_jkr());
+//! # Ok::<(), contact::ContactError>(())
+//! ```
 //!
 //! ## Equations
-//! With `R = R1/2`, `E* = E/(2(1 - nu^2))`, `m* = m1/2`, `gamma = 2 gamma_SV`:
+//! With the reduced radius and mass of the [`Geometry`] (`R = R1 R2/(R1 + R2)`,
+//! `m* = m1 m2/(m1 + m2)`; `R1/2` and `m1/2` for the paper's identical spheres, `R1` and `m1` on a
+//! wall), `E* = E/(2(1 - nu^2))` and `gamma = 2 gamma_SV`:
 //! ```text
 //! a_eq     = (9 pi gamma R^2 / (2 E*))^(1/3)                     (Sec. 2.2)
 //! delta_eq = (3 pi^2 R gamma^2 / (4 E*^2))^(1/3) = a_eq^2/(3R)   (Sec. 2.2)
@@ -24,12 +39,15 @@
 //! Materials (Section 3): [`Material::co2`] (E and nu from sound speeds) and [`Material::h2o`], or
 //! a JSON file with the fields `gamma_sv`, `young`, `poisson`, `density`.
 
-#![warn(missing_docs)]
-
 pub mod error;
+pub mod geometry;
 pub mod material;
-pub mod sphere;
+pub mod pair;
 
 pub use error::ContactError;
+pub use geometry::Geometry;
+pub use greenwood::OutOfRange;
 pub use material::{elastic_from_sound_speeds, Material, PRESETS};
-pub use sphere::{Contact, Warning, SURFACE_FORCE_RANGE, TABOR_MIN};
+pub use pair::{
+    Contact, Warning, PLAUSIBLE_RADIUS, PLAUSIBLE_SPEED_MAX, SURFACE_FORCE_RANGE, TABOR_MIN,
+};

@@ -1,11 +1,17 @@
 //! Bulk material properties of a grain (Arakawa & Krijt 2021, Section 3).
 
 use crate::ContactError;
+use greenwood::{positive, OutOfRange};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
 /// Names of the built-in materials, for messages.
 pub const PRESETS: &str = "co2, h2o";
+
+/// Longitudinal sound speed in CO2 ice at 80 K (m/s), Yamashita et al. (1997), Section 3.2.
+pub const CO2_V_LONGITUDINAL: f64 = 2900.0;
+/// Transverse sound speed in CO2 ice at 80 K (m/s), Yamashita et al. (1997), Section 3.2.
+pub const CO2_V_TRANSVERSE: f64 = 1650.0;
 
 /// The four material constants of the model, in SI units.
 ///
@@ -41,7 +47,8 @@ impl Material {
     /// E = 10.7 GPa and nu = 0.26. (Section 5.4 uses rho = 1650 kg/m^3; set `density` to change it.)
     pub fn co2() -> Self {
         let density = 1560.0;
-        let (young, poisson) = elastic_from_sound_speeds(2900.0, 1650.0, density);
+        let (young, poisson) =
+            elastic_from_sound_speeds(CO2_V_LONGITUDINAL, CO2_V_TRANSVERSE, density);
         Self {
             gamma_sv: 0.08,
             young,
@@ -69,75 +76,99 @@ impl Material {
         }
     }
 
-    /// A preset name, or else a path to a JSON material file.
+    /// A preset name, or else a path to a JSON material file (validated; see
+    /// [`Material::from_json_file`]). A name that looks like a path (it holds a `/` or ends in
+    /// `.json`) but names no file is [`ContactError::MaterialFileNotFound`].
     pub fn from_name_or_path(name: &str) -> Result<Self, ContactError> {
-        if let Some(m) = Self::preset(name) {
-            return Ok(m);
+        match Self::preset(name) {
+            Some(m) => Ok(m),
+            None => Self::from_json_file(Path::new(name)).map_err(|e| match e {
+                ContactError::MaterialFileNotFound { .. } if !looks_like_path(name) => {
+                    ContactError::UnknownMaterial {
+                        name: name.to_string(),
+                        presets: PRESETS,
+                    }
+                }
+                other => other,
+            }),
         }
-        let path = Path::new(name);
-        if path.is_file() {
-            return Self::from_json_file(path);
-        }
-        Err(ContactError::UnknownMaterial {
-            name: name.to_string(),
-            presets: PRESETS,
-        })
     }
 
     /// Parses `{"gamma_sv": .., "young": .., "poisson": .., "density": ..}` (SI units) and
     /// validates it. Unknown or missing fields are errors that name the field.
+    ///
+    /// # Example
+    /// ```
+    /// use contact::Material;
+    /// let ice = Material::from_json_str(r#"{"gamma_sv": 0.1, "young": 7e9, "poisson": 0.25, "density": 930}"#)?;
+    /// assert_eq!(ice, Material::h2o());
+    /// let bad = Material::from_json_str(r#"{"gamma_sv": 0.1, "young": 7e9, "poisson": 0.25, "density": -930}"#);
+    /// assert_eq!(bad.unwrap_err().to_string(), "<string>: density = -930.0: must be > 0 and finite (kg/m^3)");
+    /// # Ok::<(), contact::ContactError>(())
+    /// ```
     pub fn from_json_str(json: &str) -> Result<Self, ContactError> {
-        let m: Self = serde_json::from_str(json).map_err(|e| ContactError::MaterialFile {
-            path: "<string>".into(),
+        Self::parse_json(json, "<string>")
+    }
+
+    /// Reads and validates a JSON material file (see [`Material::from_json_str`]); every error
+    /// names the file, and a bad value names its field: `ice.json: density = -930.0: must be > 0
+    /// and finite (kg/m^3)`.
+    pub fn from_json_file(path: &Path) -> Result<Self, ContactError> {
+        let m = Self::read_json_file(path)?;
+        m.validate().map_err(|e| ContactError::MaterialFile {
+            path: path.display().to_string(),
             message: e.to_string(),
         })?;
-        m.validate()?;
         Ok(m)
     }
 
-    /// Reads and validates a JSON material file (see [`Material::from_json_str`]).
-    pub fn from_json_file(path: &Path) -> Result<Self, ContactError> {
+    /// Reads a JSON material file without validating the values (for callers that override
+    /// fields before validating); unreadable files, unknown and missing fields are errors.
+    pub fn read_json_file(path: &Path) -> Result<Self, ContactError> {
         let shown = path.display().to_string();
+        if !path.is_file() {
+            return Err(ContactError::MaterialFileNotFound { path: shown });
+        }
         let text = std::fs::read_to_string(path).map_err(|e| ContactError::MaterialFile {
             path: shown.clone(),
             message: e.to_string(),
         })?;
-        Self::from_json_str(&text).map_err(|e| match e {
-            ContactError::MaterialFile { message, .. } => ContactError::MaterialFile {
-                path: shown,
-                message,
-            },
-            other => other,
+        serde_json::from_str(&text).map_err(|e| ContactError::MaterialFile {
+            path: shown,
+            message: e.to_string(),
         })
     }
 
-    /// Checks every field: finite, gamma_sv, young, density > 0 and -1 < poisson < 0.5.
-    pub fn validate(&self) -> Result<(), ContactError> {
+    fn parse_json(json: &str, shown: &str) -> Result<Self, ContactError> {
+        let m: Self = serde_json::from_str(json).map_err(|e| ContactError::MaterialFile {
+            path: shown.into(),
+            message: e.to_string(),
+        })?;
+        m.validate().map_err(|e| ContactError::MaterialFile {
+            path: shown.into(),
+            message: e.to_string(),
+        })?;
+        Ok(m)
+    }
+
+    /// Checks every field: finite, `gamma_sv`, `young`, `density` > 0 and -1 < `poisson` < 0.5.
+    pub fn validate(&self) -> Result<(), OutOfRange> {
         positive("gamma_sv", self.gamma_sv, "J/m^2")?;
         positive("young", self.young, "Pa")?;
-        positive("density", self.density, "kg/m^3")?;
         if !(self.poisson.is_finite() && self.poisson > -1.0 && self.poisson < 0.5) {
-            return Err(ContactError::OutOfRange {
-                field: "poisson",
-                value: self.poisson,
-                allowed: "-1 < poisson < 0.5",
-                unit: "dimensionless",
-            });
+            return Err(OutOfRange::new(
+                "poisson",
+                self.poisson,
+                "-1 < poisson < 0.5",
+                "dimensionless",
+            ));
         }
+        positive("density", self.density, "kg/m^3")?;
         Ok(())
     }
 }
 
-/// `Ok` when `value` is finite and > 0, else an [`ContactError::OutOfRange`] naming `field`.
-pub fn positive(field: &'static str, value: f64, unit: &'static str) -> Result<(), ContactError> {
-    if value.is_finite() && value > 0.0 {
-        Ok(())
-    } else {
-        Err(ContactError::OutOfRange {
-            field,
-            value,
-            allowed: "> 0 and finite",
-            unit,
-        })
-    }
+/// Whether a material name is meant as a file path rather than a preset name.
+fn looks_like_path(name: &str) -> bool {
+    name.contains(std::path::MAIN_SEPARATOR) || name.contains('/') || name.ends_with(".json")
 }

@@ -1,6 +1,8 @@
 //! Closed-form consistency of the contact model (Arakawa & Krijt 2021, Section 2).
 
-use contact::{Contact, ContactError, Material};
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use contact::{Contact, ContactError, Geometry, Material, OutOfRange};
 use std::f64::consts::PI;
 
 fn rel(a: f64, b: f64) -> f64 {
@@ -8,7 +10,7 @@ fn rel(a: f64, b: f64) -> f64 {
 }
 
 fn co2() -> Contact {
-    Contact::new(Material::co2(), 60e-6).unwrap()
+    Contact::new(Material::co2(), Geometry::identical(60e-6)).unwrap()
 }
 
 /// Section 2.2: both expressions of delta_eq agree, and at (a_eq, delta_eq) F_E = 0 and beta = 1.
@@ -60,21 +62,24 @@ fn initial_radius_gives_initial_beta() {
 
 #[test]
 fn bad_inputs_name_the_field() {
-    let err = Contact::new(Material::co2(), -1.0).unwrap_err();
+    let err = Contact::new(Material::co2(), Geometry::identical(-1.0)).unwrap_err();
     assert!(matches!(
         err,
-        ContactError::OutOfRange {
+        ContactError::OutOfRange(OutOfRange {
             field: "radius",
             ..
-        }
+        })
     ));
+    assert_eq!(err.to_string(), "radius = -1.0: must be > 0 and finite (m)");
+    let err = Contact::new(Material::co2(), Geometry::spheres(1e-6, f64::NAN)).unwrap_err();
+    assert_eq!(err.to_string(), "radius2 = nan: must be > 0 and finite (m)");
     let bad = Material {
         poisson: 0.5,
         ..Material::co2()
     };
     assert!(matches!(
         bad.validate(),
-        Err(ContactError::OutOfRange {
+        Err(OutOfRange {
             field: "poisson",
             ..
         })
@@ -85,7 +90,7 @@ fn bad_inputs_name_the_field() {
     };
     assert!(matches!(
         bad.validate(),
-        Err(ContactError::OutOfRange { field: "young", .. })
+        Err(OutOfRange { field: "young", .. })
     ));
 }
 

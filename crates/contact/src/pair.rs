@@ -1,8 +1,9 @@
-//! The contact of two identical spheres: JKR equilibrium, forces, energies (Section 2) and the
-//! JKR sticking and breaking energies (Sections 5.1 and 6).
+//! The contact of two bodies of one material ([`Geometry`]): JKR equilibrium, forces, energies
+//! (Section 2) and the JKR sticking and breaking energies (Sections 5.1 and 6).
 
-use crate::material::positive;
-use crate::{ContactError, Material};
+use crate::{ContactError, Geometry, Material};
+use greenwood::format::number;
+use greenwood::positive;
 use std::f64::consts::PI;
 
 /// Range of action of the surface forces, epsilon = 0.3 nm (Section 2.2, after Krijt et al. 2013), in m.
@@ -12,16 +13,23 @@ pub const SURFACE_FORCE_RANGE: f64 = 0.3e-9;
 /// Section 5.1), dimensionless.
 pub const THORNTON_NING_14_18: f64 = 14.18;
 
-/// `E_stick,JKR = 0.9355 F_crit delta_crit` (Section 6), dimensionless.
-pub const E_STICK_COEFF: f64 = 0.9355;
-
 /// `E_break,JKR = 1.54 F_crit delta_crit` (Section 6, Wada et al. 2007), dimensionless.
 pub const E_BREAK_COEFF: f64 = 1.54;
 
 /// Tabor parameter below which JKR theory is outside its validity (Section 2.2: it needs mu >> 1).
 pub const TABOR_MIN: f64 = 1.0;
 
-/// A condition under which the model's results should be read with care.
+/// Plausible grain radii R1 (m): 10 nm (below, the Tabor parameter of ices falls under 1) to
+/// 1 cm (beyond, "grains" are pebbles). Outside, a result comes with a warning, since a radius
+/// given in the wrong unit (60 for 60 um) is the likeliest slip.
+pub const PLAUSIBLE_RADIUS: (f64, f64) = (1e-8, 1e-2);
+
+/// Impact speeds above this (m/s) come with a warning: 1 km/s is far above grain collision
+/// speeds in discs (tens of m/s), where contact mechanics no longer describes the impact.
+pub const PLAUSIBLE_SPEED_MAX: f64 = 1e3;
+
+/// A condition under which the model's results should be read with care; its
+/// [`std::fmt::Display`] form is the sentence shown to the user.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Warning {
     /// The Tabor parameter is below [`TABOR_MIN`]: surface forces act outside the contact and JKR
@@ -30,40 +38,110 @@ pub enum Warning {
         /// The Tabor parameter mu (dimensionless).
         tabor: f64,
     },
+    /// A radius outside [`PLAUSIBLE_RADIUS`] (valid, but likely given in the wrong unit).
+    ImplausibleRadius {
+        /// The input (`radius`).
+        field: &'static str,
+        /// Its value (m).
+        value: f64,
+    },
+    /// A speed above [`PLAUSIBLE_SPEED_MAX`].
+    ImplausibleSpeed {
+        /// The input (`v_in`).
+        field: &'static str,
+        /// Its value (m/s).
+        value: f64,
+    },
+}
+
+impl Warning {
+    /// A warning for an impact speed `value` (m/s) of the input `field` above
+    /// [`PLAUSIBLE_SPEED_MAX`], else `None`.
+    pub fn for_speed(field: &'static str, value: f64) -> Option<Self> {
+        (value > PLAUSIBLE_SPEED_MAX).then_some(Self::ImplausibleSpeed { field, value })
+    }
+
+    /// A warning for a radius `value` (m) of the input `field` outside [`PLAUSIBLE_RADIUS`],
+    /// else `None`.
+    pub fn for_radius(field: &'static str, value: f64) -> Option<Self> {
+        let (lo, hi) = PLAUSIBLE_RADIUS;
+        (value < lo || value > hi).then_some(Self::ImplausibleRadius { field, value })
+    }
 }
 
 impl std::fmt::Display for Warning {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match self {
+        match *self {
             Warning::JkrOutsideValidity { tabor } => write!(
                 f,
-                "Tabor parameter mu = {tabor:.3} < {TABOR_MIN}: JKR theory (mu >> 1) is outside its validity for these grains (Arakawa & Krijt 2021, Section 2.2)"
+                "Tabor parameter mu = {} < {}: JKR theory (mu >> 1) is outside its validity for these grains (Arakawa & Krijt 2021, Section 2.2)",
+                number(tabor),
+                number(TABOR_MIN)
+            ),
+            Warning::ImplausibleRadius { field, value } => {
+                let (lo, hi) = PLAUSIBLE_RADIUS;
+                write!(
+                    f,
+                    "{field} = {} m is outside the plausible range {} - {} m of dust and ice grains",
+                    number(value),
+                    number(lo),
+                    number(hi)
+                )?;
+                // a value read as micrometres that lands inside the range: suggest it
+                let micro = value * 1e-6;
+                if value > hi && (lo..=hi).contains(&micro) {
+                    let digits = number(value);
+                    write!(f, "; did you mean {}e-6 m?", digits.trim_end_matches(".0"))?;
+                }
+                Ok(())
+            }
+            Warning::ImplausibleSpeed { field, value } => write!(
+                f,
+                "{field} = {} m/s is above {} m/s, far beyond grain collision speeds in discs, where contact mechanics no longer applies",
+                number(value),
+                number(PLAUSIBLE_SPEED_MAX)
             ),
         }
     }
 }
 
-/// Head-on contact of two identical spheres of radius `r1` made of one [`Material`].
+/// Head-on contact of two bodies ([`Geometry`]) made of one [`Material`].
 ///
-/// Reduced quantities (Section 2.1): `R = R1/2`, `E* = E / (2 (1 - nu^2))`, `m* = m1/2` with
-/// `m1 = 4 pi rho R1^3 / 3`, and the work of adhesion `gamma = 2 gamma_SV` (Section 3.1), which is
-/// the gamma of every formula below. All inputs and outputs are SI.
+/// Reduced quantities (Section 2.1): `R` and `m*` from the [`Geometry`] (`R1/2` and `m1/2` for
+/// the paper's identical spheres), `E* = E / (2 (1 - nu^2))`, and the work of adhesion
+/// `gamma = 2 gamma_SV` (Section 3.1), which is the gamma of every formula below. All inputs and
+/// outputs are SI.
+///
+/// # Example
+/// ```
+/// use contact::{Contact, Geometry, Material};
+/// let c = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+/// // Section 5.1: V_stick,JKR = 1.66e-2 m/s for CO2 grains of R1 = 60 um; Section 2.2: mu ~ 9.5
+/// assert!((c.v_stick_jkr() - 1.66e-2).abs() < 5e-5);
+/// assert!((c.tabor() - 9.5).abs() < 0.05);
+/// // the JKR equilibrium is where the apparent surface energy equals gamma: beta = 1
+/// assert!((c.beta(c.a_eq(), c.delta_eq()) - 1.0).abs() < 1e-12);
+/// // on a wall, V_stick,JKR is 2^(1/6) times larger (R = R1, m* = m1)
+/// let w = Contact::new(Material::co2(), Geometry::wall(60e-6))?;
+/// assert!((w.v_stick_jkr() / c.v_stick_jkr() - 2f64.powf(1.0 / 6.0)).abs() < 1e-12);
+/// # Ok::<(), contact::ContactError>(())
+/// ```
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Contact {
     material: Material,
-    r1: f64,
+    geometry: Geometry,
     epsilon: f64,
 }
 
 impl Contact {
-    /// Contact of two spheres of radius `r1` (m, > 0) made of `material` (validated), with the
-    /// surface-force range epsilon = [`SURFACE_FORCE_RANGE`].
-    pub fn new(material: Material, r1: f64) -> Result<Self, ContactError> {
+    /// Contact of the bodies `geometry` (radii in m, > 0) made of `material` (validated), with
+    /// the surface-force range epsilon = [`SURFACE_FORCE_RANGE`].
+    pub fn new(material: Material, geometry: Geometry) -> Result<Self, ContactError> {
         material.validate()?;
-        positive("radius", r1, "m")?;
+        geometry.validate()?;
         Ok(Self {
             material,
-            r1,
+            geometry,
             epsilon: SURFACE_FORCE_RANGE,
         })
     }
@@ -80,9 +158,14 @@ impl Contact {
         &self.material
     }
 
+    /// The two bodies (radii in m).
+    pub fn geometry(&self) -> &Geometry {
+        &self.geometry
+    }
+
     /// Particle radius R1 (m).
     pub fn r1(&self) -> f64 {
-        self.r1
+        self.geometry.r1()
     }
 
     /// Surface-force range epsilon (m).
@@ -90,9 +173,9 @@ impl Contact {
         self.epsilon
     }
 
-    /// Reduced radius R = R1/2 (m).
+    /// Reduced radius R = R1 R2/(R1 + R2) (m): R1/2 for identical spheres, R1 on a wall.
     pub fn reduced_radius(&self) -> f64 {
-        0.5 * self.r1
+        self.geometry.reduced_radius()
     }
 
     /// Contact modulus E* = E / (2 (1 - nu^2)) (Pa).
@@ -101,14 +184,14 @@ impl Contact {
         self.material.young / (2.0 * (1.0 - nu * nu))
     }
 
-    /// Mass of one particle m1 = 4 pi rho R1^3 / 3 (kg).
+    /// Mass of the (first) particle m1 = 4 pi rho R1^3 / 3 (kg).
     pub fn m1(&self) -> f64 {
-        4.0 * PI * self.material.density * self.r1.powi(3) / 3.0
+        self.geometry.m1(self.material.density)
     }
 
-    /// Reduced mass m* = m1/2 (kg).
+    /// Reduced mass m* = m1 m2/(m1 + m2) (kg): m1/2 for identical spheres, m1 on a wall.
     pub fn m_star(&self) -> f64 {
-        0.5 * self.m1()
+        self.geometry.reduced_mass(self.material.density)
     }
 
     /// Work of adhesion gamma = 2 gamma_SV (J/m^2).
@@ -135,14 +218,17 @@ impl Contact {
         (self.reduced_radius() * g * g / (e * e)).cbrt() / self.epsilon
     }
 
-    /// Conditions under which the results of this contact should be read with care.
+    /// Conditions under which the results of this contact should be read with care: a radius
+    /// R1 outside [`PLAUSIBLE_RADIUS`], a Tabor parameter below [`TABOR_MIN`].
     pub fn warnings(&self) -> Vec<Warning> {
         let tabor = self.tabor();
+        let mut out: Vec<Warning> = Warning::for_radius("radius", self.r1())
+            .into_iter()
+            .collect();
         if tabor < TABOR_MIN {
-            vec![Warning::JkrOutsideValidity { tabor }]
-        } else {
-            Vec::new()
+            out.push(Warning::JkrOutsideValidity { tabor });
         }
+        out
     }
 
     /// Pull-off force F_crit = 3 pi gamma R / 2 (N) (Section 6).
