@@ -1,7 +1,9 @@
 //! One collision of two 60 um CO2 grains (T_vis = 1e-9 s and 1e-14 s) at the threshold-search
 //! tolerance: sticking, double collision and bouncing. `cargo bench -p dynamics`.
 
-use contact::{Contact, Material};
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use contact::{Contact, Geometry, Material};
 use criterion::{criterion_group, criterion_main, Criterion};
 use dynamics::{Collider, SolverOptions};
 use greenwood::CrackLaw;
@@ -9,7 +11,7 @@ use std::hint::black_box;
 
 fn collisions(c: &mut Criterion) {
     let law = CrackLaw::new(0.01).expect("k in range");
-    let contact = Contact::new(Material::co2(), 60e-6).expect("valid");
+    let contact = Contact::new(Material::co2(), Geometry::identical(60e-6)).expect("valid");
     let opts = SolverOptions {
         rtol: 1e-8,
         atol: 1e-11,

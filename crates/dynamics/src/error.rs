@@ -1,7 +1,8 @@
 //! Typed errors of the collision integrator, layered over the lower crates' errors.
 
-use contact::ContactError;
-use greenwood::GreenwoodError;
+use contact::{ContactError, Geometry};
+use greenwood::format::number;
+use greenwood::{GreenwoodError, OutOfRange};
 
 /// Everything that can go wrong when integrating a collision.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -12,23 +13,14 @@ pub enum DynamicsError {
     /// Invalid crack-law parameters.
     #[error(transparent)]
     Greenwood(#[from] GreenwoodError),
-    /// A collision parameter is outside its allowed range.
-    #[error("{field} = {value:?} is outside the allowed range {allowed} ({unit})")]
-    OutOfRange {
-        /// Parameter name (`t_vis`, `v_in`, `eps`, `rtol`, ...).
-        field: &'static str,
-        /// The rejected value.
-        value: f64,
-        /// The allowed range.
-        allowed: &'static str,
-        /// SI unit.
-        unit: &'static str,
-    },
+    /// A collision parameter is outside its allowed range (`t_vis`, `v_in`, `eps`, `rtol`, ...).
+    #[error(transparent)]
+    OutOfRange(#[from] OutOfRange),
     /// The ODE solver failed.
-    #[error("ODE solver failed at R1 = {r1:?} m, T_vis = {t_vis:?} s, V_in = {v_in:?} m/s, after t = {t:?} s with a = {a:?} m, delta = {delta:?} m, delta_dot = {delta_dot:?} m/s, beta = {beta:?}: {message}")]
+    #[error("ODE solver failed for {geometry}, T_vis = {} s, V_in = {} m/s, after t = {} s with a = {} m, delta = {} m, delta_dot = {} m/s, beta = {}: {message}", number(*t_vis), number(*v_in), number(*t), number(*a), number(*delta), number(*delta_dot), number(*beta))]
     Solver {
-        /// Particle radius (m).
-        r1: f64,
+        /// The colliding bodies (radii in m).
+        geometry: Geometry,
         /// Relaxation time (s).
         t_vis: f64,
         /// Impact speed (m/s).
@@ -47,10 +39,10 @@ pub enum DynamicsError {
         message: String,
     },
     /// Neither the end of contact nor a sticking criterion was reached within the step budget.
-    #[error("no outcome after {steps} solver steps at R1 = {r1:?} m, T_vis = {t_vis:?} s, V_in = {v_in:?} m/s (raise max_steps)")]
+    #[error("no outcome after {steps} solver steps for {geometry}, T_vis = {} s, V_in = {} m/s (raise max_steps)", number(*t_vis), number(*v_in))]
     Undecided {
-        /// Particle radius (m).
-        r1: f64,
+        /// The colliding bodies (radii in m).
+        geometry: Geometry,
         /// Relaxation time (s).
         t_vis: f64,
         /// Impact speed (m/s).
@@ -58,4 +50,17 @@ pub enum DynamicsError {
         /// Steps taken.
         steps: usize,
     },
+}
+
+impl DynamicsError {
+    /// The input out of range behind this error, wherever it was caught (contact, crack law or
+    /// collision); `None` for failures of the computation.
+    pub fn out_of_range(&self) -> Option<&OutOfRange> {
+        match self {
+            DynamicsError::OutOfRange(o)
+            | DynamicsError::Contact(ContactError::OutOfRange(o))
+            | DynamicsError::Greenwood(GreenwoodError::OutOfRange(o)) => Some(o),
+            _ => None,
+        }
+    }
 }

@@ -1,6 +1,8 @@
 //! Collisions of two identical spheres (Arakawa & Krijt 2021, Sections 2.5-2.6 and 4).
 
-use contact::{Contact, Material};
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use contact::{Contact, Geometry, Material};
 use dynamics::model::{self, end_energy_bound, Params};
 use dynamics::{
     Backend, Collider, DynamicsError, Method, Outcome, SolverOptions, StickingCriterion,
@@ -8,7 +10,7 @@ use dynamics::{
 use greenwood::CrackLaw;
 
 fn co2_60um() -> Contact {
-    Contact::new(Material::co2(), 60e-6).unwrap()
+    Contact::new(Material::co2(), Geometry::identical(60e-6)).unwrap()
 }
 
 fn law() -> CrackLaw {
@@ -247,14 +249,17 @@ fn bad_inputs_are_typed_errors() {
     let err = Collider::new(co2_60um(), &law, 0.0).unwrap_err();
     assert!(matches!(
         err,
-        DynamicsError::OutOfRange { field: "t_vis", .. }
+        DynamicsError::OutOfRange(greenwood::OutOfRange { field: "t_vis", .. })
     ));
     assert!(err.to_string().contains("JKR"));
     let col = Collider::new(co2_60um(), &law, 1e-9).unwrap();
     for v in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         assert!(matches!(
             col.collide(v),
-            Err(DynamicsError::OutOfRange { field: "v_in", .. })
+            Err(DynamicsError::OutOfRange(greenwood::OutOfRange {
+                field: "v_in",
+                ..
+            }))
         ));
     }
 }

@@ -2,7 +2,9 @@
 //! (Arakawa & Krijt 2021, Sections 2.5 and 4.4): the energy never increases along a trajectory,
 //! and a bouncing collision has 0 <= e < 1.
 
-use contact::{Contact, Material};
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use contact::{Contact, Geometry, Material};
 use dynamics::{Collider, Outcome, SolverOptions};
 use greenwood::CrackLaw;
 use proptest::prelude::*;
@@ -27,7 +29,7 @@ proptest! {
         speed in 0.3f64..30.0,
     ) {
         let law = CrackLaw::new(0.01).unwrap();
-        let c = Contact::new(material(h2o, gamma_sv), 10f64.powf(log_r1)).unwrap();
+        let c = Contact::new(material(h2o, gamma_sv), Geometry::identical(10f64.powf(log_r1))).unwrap();
         let v_in = speed * c.v_stick_jkr();
         let col = Collider::new(c, &law, 10f64.powf(log_t)).unwrap()
             .with_options(SolverOptions { record_trajectory: true, ..Default::default() }).unwrap();
