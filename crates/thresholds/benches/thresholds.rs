@@ -2,7 +2,9 @@
 //! the Speed issue, and a Figure-4-like sweep (2 k x 11 T_vis, each search seeded by its
 //! neighbour). `cargo bench -p thresholds`.
 
-use contact::{Contact, Material};
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use contact::{Contact, Geometry, Material};
 use criterion::{criterion_group, criterion_main, Criterion};
 use greenwood::CrackLaw;
 use std::hint::black_box;
@@ -10,8 +12,8 @@ use thresholds::{sticking_thresholds, sweep_t_vis, SearchOptions};
 
 fn v_stick(c: &mut Criterion) {
     let law = CrackLaw::new(0.01).expect("k in range");
-    let co2 = Contact::new(Material::co2(), 60e-6).expect("valid");
-    let h2o = Contact::new(Material::h2o(), 90e-6).expect("valid");
+    let co2 = Contact::new(Material::co2(), Geometry::identical(60e-6)).expect("valid");
+    let h2o = Contact::new(Material::h2o(), Geometry::identical(90e-6)).expect("valid");
     let opts = SearchOptions::default();
     let mut group = c.benchmark_group("v_stick");
     group.sample_size(20);

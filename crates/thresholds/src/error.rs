@@ -1,31 +1,23 @@
 //! Typed errors of the threshold searches, layered over the collision errors.
 
 use dynamics::DynamicsError;
+use greenwood::format::number;
+use greenwood::OutOfRange;
 
 /// Everything that can go wrong in a threshold search.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ThresholdsError {
-    /// A collision failed.
+    /// A collision failed, or its inputs were invalid.
     #[error(transparent)]
     Dynamics(#[from] DynamicsError),
-    /// A parameter is outside its allowed range.
-    #[error("{field} = {value:?} is outside the allowed range {allowed} ({unit})")]
-    OutOfRange {
-        /// Parameter name.
-        field: &'static str,
-        /// The rejected value.
-        value: f64,
-        /// The allowed range.
-        allowed: &'static str,
-        /// SI unit.
-        unit: &'static str,
-    },
-    /// A bug: an invariant of the search did not hold.
-    #[error("internal error: {0}")]
-    Internal(String),
+    /// A parameter of the search is outside its allowed range.
+    #[error(transparent)]
+    OutOfRange(#[from] OutOfRange),
     /// No sticking collision was found down to the lower end of the search.
     #[error(
-        "no sticking collision at or above {v_min:?} m/s (T_vis = {t_vis:?} s): the grains never stick"
+        "no sticking collision at or above {} m/s (T_vis = {} s): the grains never stick",
+        number(*v_min),
+        number(*t_vis)
     )]
     NoSticking {
         /// Lowest impact speed tried (m/s).
@@ -33,6 +25,56 @@ pub enum ThresholdsError {
         /// Relaxation time (s).
         t_vis: f64,
     },
+    /// A measured V_stick at or below V_stick,JKR: no relaxation time reproduces it, since
+    /// V_stick > V_stick,JKR for every T_vis > 0 (Section 5.1).
+    #[error(
+        "v_stick = {} m/s is at or below V_stick,JKR = {} m/s, which every T_vis > 0 exceeds: no relaxation time reproduces it (the JKR limit T_vis -> 0 is the closest)",
+        number(*v_stick),
+        number(*v_stick_jkr)
+    )]
+    BelowJkr {
+        /// The measured value (m/s).
+        v_stick: f64,
+        /// V_stick,JKR of the contact (m/s).
+        v_stick_jkr: f64,
+    },
+    /// A measured V_stick above what any relaxation time up to `t_vis_max` gives.
+    #[error(
+        "v_stick = {} m/s is not reached for T_vis up to {} s",
+        number(*v_stick),
+        number(*t_vis_max)
+    )]
+    Unreachable {
+        /// The measured value (m/s).
+        v_stick: f64,
+        /// Largest relaxation time tried (s).
+        t_vis_max: f64,
+    },
+}
+
+impl ThresholdsError {
+    /// The input out of range behind this error, wherever it was caught; a measured V_stick at or
+    /// below V_stick,JKR reads as `v_stick` out of range, with V_stick,JKR in the allowed range.
+    /// `None` for failures of the computation (and for an unreachable V_stick).
+    pub fn out_of_range(&self) -> Option<OutOfRange> {
+        match self {
+            ThresholdsError::OutOfRange(o) => Some(o.clone()),
+            ThresholdsError::Dynamics(d) => d.out_of_range().cloned(),
+            ThresholdsError::BelowJkr {
+                v_stick,
+                v_stick_jkr,
+            } => Some(OutOfRange::new(
+                "v_stick",
+                *v_stick,
+                format!(
+                    "> V_stick,JKR = {}, which V_stick exceeds for every T_vis > 0",
+                    number(*v_stick_jkr)
+                ),
+                "m/s",
+            )),
+            _ => None,
+        }
+    }
 }
 
 impl From<contact::ContactError> for ThresholdsError {

@@ -1,12 +1,63 @@
 //! Size-dependent relaxation times (Section 5.3) and the fragmentation velocity (Section 6).
 
+use crate::stick::{sticking_thresholds, SearchOptions};
+use crate::ThresholdsError;
+use contact::Contact;
+use greenwood::CrackLaw;
+
 /// `V_frag = 10 V_stick` (Section 6, Eq. vfrag; from C ~ 15 and E_break ~ 1.54 F_crit delta_crit).
 pub const V_FRAG_FACTOR: f64 = 10.0;
 
 /// Fragmentation velocity of aggregates of monomers with sticking velocity `v_stick` (m/s):
 /// `V_frag = 10 V_stick` (m/s). With `v_stick = V_stick,JKR` this is V_frag,JKR.
+///
+/// # Example
+/// ```
+/// use thresholds::{v_frag, Contact, Geometry, Material};
+/// // Section 7.1: V_frag,JKR = 2.96e-1 m/s for aggregates of CO2 monomers of R1 = 30 um
+/// let c = Contact::new(Material::co2(), Geometry::identical(30e-6))?;
+/// assert!((v_frag(c.v_stick_jkr()) / 0.296 - 1.0).abs() < 0.002);
+/// # Ok::<(), thresholds::ContactError>(())
+/// ```
 pub fn v_frag(v_stick: f64) -> f64 {
     V_FRAG_FACTOR * v_stick
+}
+
+/// V_frag of aggregates and V_stick of their monomers at one relaxation time (SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Fragmentation {
+    /// V_frag = 10 V_stick (m/s); `None` without bouncing below `no_bouncing_below`.
+    pub v_frag: Option<f64>,
+    /// V_stick of the monomers (m/s); `None` as `v_frag`.
+    pub v_stick: Option<f64>,
+    /// The relaxation time used (s); 0 is the JKR limit.
+    pub t_vis: f64,
+    /// V_frag,JKR = 10 V_stick,JKR (m/s).
+    pub v_frag_jkr: f64,
+    /// V_stick,JKR (m/s).
+    pub v_stick_jkr: f64,
+    /// Highest speed searched when no collision bounced (m/s), else `None`.
+    pub no_bouncing_below: Option<f64>,
+}
+
+/// V_frag = 10 V_stick of aggregates of the monomers of `contact` at relaxation time `t_vis`
+/// (s, >= 0; 0 is the JKR limit), Section 6.
+#[doc(alias = "V_frag")]
+pub fn fragmentation(
+    contact: &Contact,
+    law: &CrackLaw,
+    t_vis: f64,
+    opts: &SearchOptions,
+) -> Result<Fragmentation, ThresholdsError> {
+    let th = sticking_thresholds(contact, law, t_vis, opts)?;
+    Ok(Fragmentation {
+        v_frag: th.v_stick.map(v_frag),
+        v_stick: th.v_stick,
+        t_vis,
+        v_frag_jkr: v_frag(th.v_stick_jkr),
+        v_stick_jkr: th.v_stick_jkr,
+        no_bouncing_below: th.no_bouncing_below(),
+    })
 }
 
 /// The empirical size laws `T_vis ∝ R1^1.11` of Section 5.3.
@@ -21,6 +72,9 @@ pub enum TVisLaw {
 /// Exponent of the size laws (Gundlach et al. 2015).
 pub const T_VIS_EXPONENT: f64 = 1.11;
 
+/// Names of the size laws, for messages.
+pub const T_VIS_LAWS: &str = "co2, h2o";
+
 impl TVisLaw {
     /// The law by name: `co2` or `h2o` (case-insensitive).
     pub fn from_name(name: &str) -> Option<Self> {
@@ -28,6 +82,14 @@ impl TVisLaw {
             "co2" => Some(Self::Co2),
             "h2o" => Some(Self::H2o),
             _ => None,
+        }
+    }
+
+    /// The law's name: `co2` or `h2o`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Self::Co2 => "co2",
+            Self::H2o => "h2o",
         }
     }
 
@@ -40,6 +102,13 @@ impl TVisLaw {
     }
 
     /// Relaxation time T_vis (s) of a grain of radius `r1` (m).
+    ///
+    /// # Example
+    /// ```
+    /// use thresholds::TVisLaw;
+    /// // Section 5.3: T_vis,H2O = 9.4e-9 s at R1 = 90 um
+    /// assert!((TVisLaw::H2o.t_vis(90e-6) / 9.4e-9 - 1.0).abs() < 0.005);
+    /// ```
     pub fn t_vis(&self, r1: f64) -> f64 {
         let (t_ref, r_ref) = self.reference();
         t_ref * (r1 / r_ref).powf(T_VIS_EXPONENT)

@@ -1,7 +1,25 @@
 //! # thresholds
 //!
 //! One job: the threshold velocities that dust-growth codes need, built on collisions from
-//! `dynamics` (Arakawa & Krijt 2021, Sections 4.4, 5 and 6).
+//! `dynamics` (Arakawa & Krijt 2021, Sections 4.4, 5 and 6). It re-exports everything its
+//! functions take, so this one dependency answers "do these grains stick?".
+//!
+//! ## Quick start
+//! ```
+//! use thresholds::{sticking_thresholds, Contact, CrackLaw, Geometry, Material, SearchOptions};
+//! // CO2 grains of R1 = 60 um, relaxation time 1e-9 s, k = 0.01 (Sections 4-5)
+//! let contact = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+//! let law = CrackLaw::new(0.01)?; // build once per k, share everywhere
+//! let th = sticking_thresholds(&contact, &law, 1e-9, &SearchOptions::default())?;
+//! let v_stick = th.v_stick.expect("bounces below the search limit"); // m/s
+//! assert!((v_stick - 0.0414).abs() < 1e-4); // Section 4.4: 4.14 cm/s
+//! assert!(v_stick > contact.v_stick_jkr()); // dissipation raises V_stick above JKR (1.66 cm/s)
+//! // the same grain on a CO2 wall (the laboratory geometry)
+//! let wall = Contact::new(Material::co2(), Geometry::wall(60e-6))?;
+//! let on_wall = sticking_thresholds(&wall, &law, 1e-9, &SearchOptions::default())?;
+//! assert!(on_wall.v_stick.unwrap() > v_stick);
+//! # Ok::<(), thresholds::ThresholdsError>(())
+//! ```
 //!
 //! ## Definitions
 //! ```text
@@ -15,21 +33,24 @@
 //! for its uncertainty (Sections 5.1-5.2).
 //!
 //! ## Map
-//! - [`stick`]: [`sticking_thresholds`] by bracketing, regula falsi and bisection, capped at
-//!   `v_max`; [`sweep_t_vis`] chains searches over T_vis with hints from the neighbours.
+//! - [`stick`]: [`sticking_thresholds`] (V_stick and the onset of double collisions) by
+//!   bracketing, regula falsi and bisection, capped at `v_max`; [`sweep_t_vis`] chains searches
+//!   over T_vis with hints from the neighbours.
 //! - [`fit`]: [`fit_t_vis`], the inverse problem.
-//! - [`laws`]: [`TVisLaw`] and [`v_frag`].
-
-#![warn(missing_docs)]
+//! - [`laws`]: [`TVisLaw`], [`v_frag`] and [`fragmentation`].
 
 pub mod error;
 pub mod fit;
 pub mod laws;
 pub mod stick;
 
+pub use contact::{Contact, ContactError, Geometry, Material, Warning};
+pub use dynamics::{Collider, Collision, DynamicsError, Outcome, SolverOptions};
 pub use error::ThresholdsError;
-pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit};
-pub use laws::{v_frag, TVisLaw, V_FRAG_FACTOR};
+pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
+pub use greenwood::{CrackLaw, OutOfRange};
+pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
 pub use stick::{
-    sticking_thresholds, sweep_t_vis, Hint, SearchOptions, StickingThresholds, V_SEARCH_LIMIT,
+    sticking_thresholds, sweep_t_vis, Hint, SearchOptions, StickingThresholds,
+    DEFAULT_V_MAX_OVER_JKR, V_SEARCH_LIMIT,
 };

@@ -1,14 +1,17 @@
 //! The threshold velocities and relaxation times Arakawa & Krijt (2021) state, reproduced.
 
-use contact::{Contact, Material};
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use contact::{Contact, Geometry, Material};
 use dynamics::{Method, SolverOptions};
 use greenwood::CrackLaw;
 use thresholds::{
     fit_t_vis, sticking_thresholds, sweep_t_vis, v_frag, Hint, SearchOptions, TVisLaw,
+    ThresholdsError,
 };
 
 fn co2(r1: f64) -> Contact {
-    Contact::new(Material::co2(), r1).unwrap()
+    Contact::new(Material::co2(), Geometry::identical(r1)).unwrap()
 }
 
 fn h2o(gamma_sv: f64) -> Contact {
@@ -17,7 +20,7 @@ fn h2o(gamma_sv: f64) -> Contact {
             gamma_sv,
             ..Material::h2o()
         },
-        90e-6,
+        Geometry::identical(90e-6),
     )
     .unwrap()
 }
@@ -238,12 +241,22 @@ fn no_bouncing_is_reported_not_hidden() {
     assert_eq!(th.v_max, 5.0);
 }
 
-/// A measured V_stick at or below V_stick,JKR needs no dissipation: T_vis = 0.
+/// Section 5.1: V_stick > V_stick,JKR for every T_vis > 0, so a measured V_stick at or below
+/// V_stick,JKR (1.66e-2 m/s for CO2 at 60 um) is reached by no relaxation time: an error that
+/// gives V_stick,JKR, never T_vis = 0. A range whose lower end is below V_stick,JKR starts at 0.
 #[test]
-fn fit_below_jkr_is_zero() {
+fn fit_at_or_below_jkr_is_refused() {
     let c = co2(60e-6);
-    let fit = fit_t_vis(&c, &law(), 0.016, 0.0, &SearchOptions::default()).unwrap();
-    assert_eq!((fit.t_vis, fit.t_vis_min, fit.t_vis_max), (0.0, 0.0, 0.0));
+    let err = fit_t_vis(&c, &law(), 0.016, 0.0, &SearchOptions::default()).unwrap_err();
+    assert!(matches!(err, ThresholdsError::BelowJkr { .. }), "{err}");
+    assert!(
+        err.to_string()
+            .contains(&greenwood::format::number(c.v_stick_jkr())),
+        "{err}"
+    );
+    let fit = fit_t_vis(&c, &law(), 0.03, 0.02, &SearchOptions::default()).unwrap();
+    assert_eq!(fit.t_vis_min, 0.0);
+    assert!(fit.t_vis > 0.0 && fit.t_vis_max > fit.t_vis);
 }
 
 /// Running the two collisions of each round in parallel or serially gives the same numbers.

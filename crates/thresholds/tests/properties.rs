@@ -1,7 +1,9 @@
 //! Property: dissipation only makes sticking easier, so V_stick >= V_stick,JKR (within the
 //! bisection tolerance) for any grain and relaxation time (Arakawa & Krijt 2021, Section 5.1).
 
-use contact::{Contact, Material};
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use contact::{Contact, Geometry, Material};
 use greenwood::CrackLaw;
 use proptest::prelude::*;
 use thresholds::{sticking_thresholds, SearchOptions};
@@ -16,7 +18,7 @@ proptest! {
     ) {
         let law = CrackLaw::new(0.01).unwrap();
         let m = if h2o { Material::h2o() } else { Material::co2() };
-        let c = Contact::new(m, 10f64.powf(log_r1)).unwrap();
+        let c = Contact::new(m, Geometry::identical(10f64.powf(log_r1))).unwrap();
         let th = sticking_thresholds(&c, &law, 10f64.powf(log_t), &SearchOptions::default()).unwrap();
         if let Some(vs) = th.v_stick {
             prop_assert!(vs >= th.v_stick_jkr * (1.0 - 2e-6), "{vs} < {}", th.v_stick_jkr);
