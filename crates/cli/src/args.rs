@@ -1,18 +1,29 @@
-//! Arguments shared by the subcommands.
+//! Arguments shared by the subcommands: the material, the geometry, k, T_vis and the search.
+//!
+//! Defaults are written as the workspace's number format prints them (`0.00006`, `1e-6`), so
+//! `--help` shows every number as the JSON output does (checked by a test).
 
 use crate::error::CliError;
-use clap::Args;
-use contact::{Contact, Material};
+use clap::{Args, ValueEnum};
+use contact::{Contact, Geometry, Material};
+use serde_json::{json, Map, Value};
+use std::path::Path;
+use thresholds::TVisLaw;
 
-/// The material and the particle radius, with optional overrides of each material constant.
+/// The material: a preset or a JSON file, with optional overrides of each constant.
 #[derive(Debug, Clone, Args)]
 pub struct MaterialArgs {
-    /// Material: a preset (co2, h2o) or a path to a JSON file with gamma_sv, young, poisson, density (SI).
+    /// Material: a preset (co2, h2o; any case) or a path to a JSON file with gamma_sv, young,
+    /// poisson, density (SI).
     #[arg(long, default_value = "co2")]
     pub material: String,
-    /// Particle radius R1 in metres (each of the two identical spheres).
-    #[arg(long, default_value_t = 60e-6, allow_hyphen_values = true)]
-    pub radius: f64,
+    #[command(flatten)]
+    pub overrides: Overrides,
+}
+
+/// Overrides of the four material constants (SI).
+#[derive(Debug, Clone, Args)]
+pub struct Overrides {
     /// Override the surface free energy gamma_SV (J/m^2); the work of adhesion is 2 gamma_SV.
     #[arg(long, allow_hyphen_values = true)]
     pub gamma_sv: Option<f64>,
@@ -27,28 +38,256 @@ pub struct MaterialArgs {
     pub density: Option<f64>,
 }
 
-impl MaterialArgs {
-    /// The material after overrides, validated.
-    pub fn material(&self) -> Result<Material, CliError> {
-        let mut m = Material::from_name_or_path(&self.material)?;
-        if let Some(v) = self.gamma_sv {
-            m.gamma_sv = v;
-        }
-        if let Some(v) = self.young {
-            m.young = v;
-        }
-        if let Some(v) = self.poisson {
-            m.poisson = v;
-        }
-        if let Some(v) = self.density {
-            m.density = v;
-        }
-        m.validate()?;
-        Ok(m)
+/// A material after overrides, with the name it goes by in titles and in `"input"`.
+#[derive(Debug, Clone)]
+pub struct NamedMaterial {
+    /// As given: a preset name or the path of the file.
+    pub given: String,
+    /// For titles: the preset name, or the file's stem.
+    pub short: String,
+    /// The constants (SI), validated.
+    pub material: Material,
+}
+
+impl Overrides {
+    fn flags(&self) -> [(&'static str, Option<f64>); 4] {
+        [
+            ("gamma_sv", self.gamma_sv),
+            ("young", self.young),
+            ("poisson", self.poisson),
+            ("density", self.density),
+        ]
     }
 
-    /// The two-sphere contact described by these arguments.
-    pub fn contact(&self) -> Result<Contact, CliError> {
-        Ok(Contact::new(self.material()?, self.radius)?)
+    /// Resolves `name` (a preset or a JSON file) and applies the overrides. A bad value names
+    /// the flag when it was overridden and the file (and field) when it came from the file.
+    pub fn resolve(&self, name: &str) -> Result<NamedMaterial, CliError> {
+        let (mut m, file) = match Material::preset(name) {
+            Some(m) => (m, None),
+            None => {
+                let m = Material::read_json_file(Path::new(name)).map_err(|e| match e {
+                    contact::ContactError::MaterialFileNotFound { .. }
+                        if !name.contains('/') && !name.ends_with(".json") =>
+                    {
+                        contact::ContactError::UnknownMaterial {
+                            name: name.to_string(),
+                            presets: contact::PRESETS,
+                        }
+                    }
+                    other => other,
+                })?;
+                (m, Some(name))
+            }
+        };
+        for (field, value) in self.flags() {
+            if let Some(v) = value {
+                match field {
+                    "gamma_sv" => m.gamma_sv = v,
+                    "young" => m.young = v,
+                    "poisson" => m.poisson = v,
+                    _ => m.density = v,
+                }
+            }
+        }
+        if let Err(e) = m.validate() {
+            let overridden = self
+                .flags()
+                .iter()
+                .any(|(f, v)| *f == e.field && v.is_some());
+            return Err(match file {
+                Some(path) if !overridden => CliError::Usage(format!("{path}: {e}")),
+                _ => e.into(),
+            });
+        }
+        let short = match file {
+            Some(path) => Path::new(path)
+                .file_stem()
+                .map_or_else(|| path.to_string(), |s| s.to_string_lossy().into_owned()),
+            None => name.to_ascii_lowercase(),
+        };
+        Ok(NamedMaterial {
+            given: name.to_string(),
+            short,
+            material: m,
+        })
+    }
+}
+
+impl MaterialArgs {
+    /// The material after overrides, validated.
+    pub fn resolve(&self) -> Result<NamedMaterial, CliError> {
+        self.overrides.resolve(&self.material)
+    }
+}
+
+/// The two bodies: a sphere of `--radius` and one of `--radius2`, or a wall.
+#[derive(Debug, Clone, Args)]
+pub struct GeometryArgs {
+    /// Radius R1 of the (first) sphere (m).
+    #[arg(long, default_value = "0.00006", allow_hyphen_values = true)]
+    pub radius: f64,
+    /// Radius R2 of the second sphere (m); default: equal to --radius (identical spheres).
+    #[arg(long, allow_hyphen_values = true)]
+    pub radius2: Option<f64>,
+    /// The sphere hits a flat wall of the same material (R2 -> infinity).
+    #[arg(long, conflicts_with = "radius2")]
+    pub wall: bool,
+}
+
+impl GeometryArgs {
+    /// The geometry described by these flags.
+    pub fn geometry(&self) -> Geometry {
+        match (self.wall, self.radius2) {
+            (true, _) => Geometry::wall(self.radius),
+            (false, Some(r2)) => Geometry::spheres(self.radius, r2),
+            (false, None) => Geometry::identical(self.radius),
+        }
+    }
+}
+
+/// A validated contact with the inputs that made it, for titles and for `"input"`.
+#[derive(Debug, Clone)]
+pub struct Setup {
+    /// The material and its names.
+    pub material: NamedMaterial,
+    /// The contact (SI).
+    pub contact: Contact,
+    /// Inputs as used: material, constants, radius, radius2, wall, then the command's own.
+    pub input: Map<String, Value>,
+}
+
+impl Setup {
+    /// Resolves the material and the geometry into a contact.
+    pub fn new(material: &MaterialArgs, geometry: &GeometryArgs) -> Result<Self, CliError> {
+        let named = material.resolve()?;
+        let g = geometry.geometry();
+        let contact = Contact::new(named.material, g)?;
+        let m = &named.material;
+        let mut input = Map::new();
+        for (k, v) in [
+            ("material", json!(named.given)),
+            ("gamma_sv", json!(m.gamma_sv)),
+            ("young", json!(m.young)),
+            ("poisson", json!(m.poisson)),
+            ("density", json!(m.density)),
+            ("radius", json!(g.r1())),
+            ("radius2", json!(g.r2())),
+            ("wall", json!(g.is_wall())),
+        ] {
+            input.insert(k.into(), v);
+        }
+        Ok(Self {
+            material: named,
+            contact,
+            input,
+        })
+    }
+
+    /// Records one more input as used.
+    pub fn with_input(&mut self, key: &str, value: impl Into<Value>) {
+        self.input.insert(key.into(), value.into());
+    }
+
+    /// `two identical spheres of 60 um of co2`, for titles.
+    pub fn describe(&self) -> String {
+        format!("{} of {}", self.contact.geometry(), self.material.short)
+    }
+}
+
+/// The crack-law parameter shared by every collision command.
+#[derive(Debug, Clone, Args)]
+pub struct KArgs {
+    /// Ratio of relaxed to instantaneous modulus k (dimensionless, 0 < k < 1).
+    #[arg(long, default_value = "0.01", allow_hyphen_values = true)]
+    pub k: f64,
+}
+
+impl KArgs {
+    /// Greenwood's crack law tabulated for this k.
+    pub fn crack_law(&self) -> Result<greenwood::CrackLaw, CliError> {
+        Ok(greenwood::CrackLaw::new(self.k)?)
+    }
+}
+
+/// The size laws of Section 5.3, as a case-insensitive flag value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum LawName {
+    /// T_vis,CO2 = 1e-11 s (R1 / 1 um)^1.11.
+    Co2,
+    /// T_vis,H2O = 1e-10 s (R1 / 1.5 um)^1.11.
+    H2o,
+}
+
+impl From<LawName> for TVisLaw {
+    fn from(l: LawName) -> Self {
+        match l {
+            LawName::Co2 => TVisLaw::Co2,
+            LawName::H2o => TVisLaw::H2o,
+        }
+    }
+}
+
+/// The relaxation time, given or from a size law of R1.
+#[derive(Debug, Clone, Args)]
+pub struct TVisArgs {
+    /// Viscoelastic relaxation time T_vis (s, >= 0; 0 is the JKR limit where allowed).
+    #[arg(long, allow_hyphen_values = true, conflicts_with = "t_vis_law")]
+    pub t_vis: Option<f64>,
+    /// T_vis from the size law of Section 5.3 at R1 = --radius: co2 = 1e-11 s (R1/1 um)^1.11,
+    /// h2o = 1e-10 s (R1/1.5 um)^1.11.
+    #[arg(long, value_enum, ignore_case = true)]
+    pub t_vis_law: Option<LawName>,
+}
+
+impl TVisArgs {
+    /// The T_vis to use (s), recorded in `setup`'s inputs (with the law when one was given);
+    /// `default` when neither flag is given (`None`: one of them is required).
+    pub fn resolve(&self, setup: &mut Setup, default: Option<f64>) -> Result<f64, CliError> {
+        let t_vis = match (self.t_vis, self.t_vis_law) {
+            (Some(t), _) => t,
+            (None, Some(law)) => {
+                let law = TVisLaw::from(law);
+                setup.with_input("t_vis_law", law.name());
+                law.t_vis(setup.contact.r1())
+            }
+            (None, None) => default.ok_or_else(|| {
+                CliError::Usage("one of --t-vis or --t-vis-law is required".into())
+            })?,
+        };
+        if !(t_vis.is_finite() && t_vis >= 0.0) {
+            return Err(greenwood::OutOfRange::new(
+                "t_vis",
+                t_vis,
+                ">= 0 and finite (0 is the JKR limit)",
+                "s",
+            )
+            .into());
+        }
+        setup.with_input("t_vis", t_vis);
+        Ok(t_vis)
+    }
+}
+
+/// The threshold-search settings shared by v-stick, fit-t-vis and v-frag.
+#[derive(Debug, Clone, Args)]
+pub struct SearchArgs {
+    /// Relative tolerance of the threshold brackets (dimensionless).
+    #[arg(long, default_value = "1e-6", allow_hyphen_values = true)]
+    pub rel_tol: f64,
+    /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; at most 10000.0).
+    #[arg(long, allow_hyphen_values = true)]
+    pub v_max: Option<f64>,
+}
+
+impl SearchArgs {
+    /// The library's search options, recorded in `setup`'s inputs (the command records the
+    /// `v_max` it searched up to).
+    pub fn options(&self, setup: &mut Setup) -> thresholds::SearchOptions {
+        setup.with_input("rel_tol", self.rel_tol);
+        thresholds::SearchOptions {
+            rel_tol: self.rel_tol,
+            v_max: self.v_max,
+            ..Default::default()
+        }
     }
 }

@@ -2,7 +2,8 @@
 
 use contact::ContactError;
 use dynamics::DynamicsError;
-use greenwood::GreenwoodError;
+use greenwood::format::number;
+use greenwood::{GreenwoodError, OutOfRange};
 use std::process::ExitCode;
 use thresholds::ThresholdsError;
 
@@ -27,36 +28,25 @@ impl CliError {
     }
 }
 
-/// The command-line flag that sets a model field.
+/// The command-line flag that sets a library input: `gamma_sv` -> `--gamma-sv`; the collision's
+/// `decide_after` is set by `--t-end`.
 pub fn flag_of(field: &str) -> String {
     match field {
-        "gamma_sv" => "--gamma-sv".into(),
-        "young" => "--young".into(),
-        "poisson" => "--poisson".into(),
-        "density" => "--density".into(),
-        "radius" => "--radius".into(),
-        "t_vis" => "--t-vis".into(),
-        "v_in" => "--v-in".into(),
-        "v_stick" => "--v-stick".into(),
-        "v_stick_err" => "--v-stick-err".into(),
-        "v_max" => "--v-max".into(),
-        "rel_tol" => "--rel-tol".into(),
+        "decide_after" => "--t-end".into(),
         other => format!("--{}", other.replace('_', "-")),
+    }
+}
+
+impl From<OutOfRange> for CliError {
+    fn from(e: OutOfRange) -> Self {
+        CliError::Usage(e.message_for(&flag_of(e.field)))
     }
 }
 
 impl From<ContactError> for CliError {
     fn from(e: ContactError) -> Self {
         match e {
-            ContactError::OutOfRange {
-                field,
-                value,
-                allowed,
-                unit,
-            } => CliError::Usage(format!(
-                "{} = {value:?} is outside the allowed range {allowed} ({unit})",
-                flag_of(field)
-            )),
+            ContactError::OutOfRange(o) => o.into(),
             other => CliError::Usage(other.to_string()),
         }
     }
@@ -65,51 +55,36 @@ impl From<ContactError> for CliError {
 impl From<GreenwoodError> for CliError {
     fn from(e: GreenwoodError) -> Self {
         match e {
-            GreenwoodError::KOutOfRange { k } => {
-                CliError::Usage(format!("--k = {k:?} is outside the allowed range 0 < k < 1"))
-            }
-            GreenwoodError::BetaOutOfRange { beta, min, max, .. } => CliError::Usage(format!(
-                "--beta = {beta:?} is outside the allowed range {min:?} < beta < {max:?} (k < beta < 1/k)"
-            )),
-            other => CliError::Compute(other.to_string()),
+            GreenwoodError::OutOfRange(o) => o.into(),
         }
     }
-}
-
-fn out_of_range(field: &str, value: f64, allowed: &str, unit: &str) -> CliError {
-    CliError::Usage(format!(
-        "{} = {value:?} is outside the allowed range {allowed} ({unit})",
-        flag_of(field)
-    ))
 }
 
 impl From<DynamicsError> for CliError {
     fn from(e: DynamicsError) -> Self {
         match e {
             DynamicsError::Contact(c) => c.into(),
-            DynamicsError::Greenwood(g) => g.into(),
-            DynamicsError::OutOfRange {
-                field,
-                value,
-                allowed,
-                unit,
-            } => out_of_range(field, value, allowed, unit),
-            other => CliError::Compute(other.to_string()),
+            other => match other.out_of_range() {
+                Some(o) => o.clone().into(),
+                None => CliError::Compute(other.to_string()),
+            },
         }
     }
 }
 
 impl From<ThresholdsError> for CliError {
     fn from(e: ThresholdsError) -> Self {
-        match e {
-            ThresholdsError::Dynamics(d) => d.into(),
-            ThresholdsError::OutOfRange {
-                field,
-                value,
-                allowed,
-                unit,
-            } => out_of_range(field, value, allowed, unit),
-            other => CliError::Compute(other.to_string()),
+        match (e.out_of_range(), e) {
+            (Some(o), _) => o.into(),
+            (None, ThresholdsError::Dynamics(d)) => d.into(),
+            (None, ThresholdsError::Unreachable { v_stick, t_vis_max }) => {
+                CliError::Usage(format!(
+                    "--v-stick = {} m/s is not reached by any T_vis up to {} s",
+                    number(v_stick),
+                    number(t_vis_max)
+                ))
+            }
+            (None, e) => CliError::Compute(e.to_string()),
         }
     }
 }

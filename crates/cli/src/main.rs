@@ -12,8 +12,8 @@ mod output;
 use clap::{Parser, Subcommand};
 use std::process::ExitCode;
 
-/// Sticking, bouncing and fragmentation of colliding viscoelastic grains
-/// (Krijt et al. 2013; Arakawa & Krijt 2021). All quantities are SI.
+/// Sticking, bouncing and fragmentation of colliding viscoelastic grains: two spheres (equal or
+/// not) or a sphere on a wall (Krijt et al. 2013; Arakawa & Krijt 2021). All quantities are SI.
 #[derive(Debug, Parser)]
 #[command(name = "stickiness", version, about, long_about = None)]
 struct Cli {
@@ -28,15 +28,28 @@ struct Cli {
 enum Command {
     /// Greenwood's normalized crack speed v(k, beta).
     CrackLaw(commands::crack_law::CrackLawArgs),
+    /// The four constants of a material (preset or JSON file), after overrides.
+    Material(commands::material::MaterialArgs),
     /// JKR equilibrium, pull-off force, sticking energy and V_stick,JKR.
     Jkr(commands::jkr::JkrArgs),
     /// One head-on collision: outcome, coefficient of restitution, contact time.
+    ///
+    /// The outcome is sticking (the contact never ends, e = 0), a double collision or bouncing.
+    /// The sign of v_out, the approach speed d(delta)/dt when the contact ends, tells the two
+    /// others apart: v_out < 0, the grains separate (bouncing, e = -v_out/v_in > 0); v_out > 0,
+    /// the contact ended while the grains approach again, so a second contact follows (double
+    /// collision, e < 0). Sections 2.6 and 4 of Arakawa & Krijt (2021).
     Collide(commands::collide::CollideArgs),
     /// Threshold velocity for sticking V_stick and the onset of double collisions.
     VStick(commands::v_stick::VStickArgs),
     /// The relaxation time T_vis that reproduces a measured V_stick.
+    ///
+    /// V_stick exceeds V_stick,JKR for every T_vis > 0, so a measured value at or below
+    /// V_stick,JKR is refused; a range whose lower end is below it starts at t_vis_min = 0.
     FitTVis(commands::fit_t_vis::FitTVisArgs),
     /// Fragmentation velocity of aggregates V_frag = 10 V_stick.
+    ///
+    /// Without --t-vis or --t-vis-law, T_vis = 0: the JKR limit V_frag,JKR.
     VFrag(commands::v_frag::VFragArgs),
 }
 
@@ -44,6 +57,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match &cli.command {
         Command::CrackLaw(a) => commands::crack_law::run(a),
+        Command::Material(a) => commands::material::run(a),
         Command::Jkr(a) => commands::jkr::run(a),
         Command::Collide(a) => commands::collide::run(a),
         Command::VStick(a) => commands::v_stick::run(a),

@@ -1,53 +1,113 @@
 //! Printing a result: aligned `name = value unit` lines by default, one JSON object with `--json`.
+//!
+//! Every number is printed in the workspace's one format ([`greenwood::format::number`]: the
+//! shortest form that reads back to the same value, as in JSON), in text as in JSON.
 
 use crate::error::CliError;
+use greenwood::format::number;
 use serde_json::{Map, Value};
 
-/// One command's result: named numbers with units, plus free-form JSON fields and warnings.
+/// One line of a report.
+#[derive(Debug)]
+struct Row {
+    key: String,
+    value: Value,
+    unit: &'static str,
+    /// What the text form says for a `null` value.
+    none: String,
+    /// Shown in the text form too (false: JSON only).
+    in_text: bool,
+}
+
+/// One command's result: an `"input"` object, named values with units, and warnings.
 #[derive(Debug, Default)]
 pub struct Report {
     title: String,
-    rows: Vec<(String, Value, &'static str)>,
+    input: Option<Map<String, Value>>,
+    rows: Vec<Row>,
     warnings: Vec<String>,
 }
 
 impl Report {
-    /// An empty report with a one-line title for the human-readable form.
+    /// An empty report with a one-line title for the text form.
     pub fn new(title: impl Into<String>) -> Self {
         Self {
             title: title.into(),
-            rows: Vec::new(),
-            warnings: Vec::new(),
+            ..Self::default()
         }
+    }
+
+    /// Sets the `"input"` object (the inputs as used).
+    pub fn input(&mut self, input: Map<String, Value>) {
+        self.input = Some(input);
     }
 
     /// Adds a number (SI `unit`). A NaN or infinity is refused: the CLI never prints one.
     pub fn number(&mut self, key: &str, value: f64, unit: &'static str) -> Result<(), CliError> {
         if !value.is_finite() {
             return Err(CliError::Compute(format!(
-                "internal error: {key} = {value} is not finite"
+                "internal error: {key} = {} is not finite",
+                number(value)
             )));
         }
-        self.rows.push((key.to_string(), Value::from(value), unit));
+        self.push(key, Value::from(value), unit, "");
         Ok(())
     }
 
-    /// Adds any JSON value (a string, a list, null).
-    pub fn value(&mut self, key: &str, value: Value, unit: &'static str) {
-        self.rows.push((key.to_string(), value, unit));
+    /// Adds a number that may be absent: `null` in JSON, `none` (a sentence) in text.
+    pub fn optional(
+        &mut self,
+        key: &str,
+        value: Option<f64>,
+        unit: &'static str,
+        none: impl Into<String>,
+    ) -> Result<(), CliError> {
+        match value {
+            Some(v) => self.number(key, v, unit),
+            None => {
+                self.push(key, Value::Null, unit, &none.into());
+                Ok(())
+            }
+        }
     }
 
-    /// Adds the model's warnings for a contact (printed on stderr, listed in JSON).
-    pub fn warn_about(&mut self, contact: &contact::Contact) {
+    /// Adds a string.
+    pub fn text(&mut self, key: &str, value: &str) {
+        self.push(key, Value::from(value), "", "");
+    }
+
+    /// Adds a value to the JSON form only (the text form says it another way).
+    pub fn json_only(&mut self, key: &str, value: Value) {
+        self.push(key, value, "", "");
+        if let Some(r) = self.rows.last_mut() {
+            r.in_text = false;
+        }
+    }
+
+    fn push(&mut self, key: &str, value: Value, unit: &'static str, none: &str) {
+        self.rows.push(Row {
+            key: key.into(),
+            value,
+            unit,
+            none: none.into(),
+            in_text: true,
+        });
+    }
+
+    /// Adds warnings (printed on stderr, listed in JSON).
+    pub fn warn(&mut self, warnings: impl IntoIterator<Item = impl ToString>) {
         self.warnings
-            .extend(contact.warnings().iter().map(|w| w.to_string()));
+            .extend(warnings.into_iter().map(|w| w.to_string()));
     }
 
-    /// The report as one JSON object (keys in insertion order), with a `warnings` list.
+    /// The report as one JSON object: `"input"` first, then the values in order, then `"warnings"`.
     pub fn to_json(&self) -> String {
         let mut map = Map::new();
-        for (k, v, _) in &self.rows {
-            map.insert(k.clone(), v.clone());
+        if let Some(input) = &self.input {
+            map.insert("input".into(), Value::Object(input.clone()));
+        }
+        for r in &self.rows {
+            map.insert(r.key.clone(), r.value.clone());
         }
         map.insert(
             "warnings".into(),
@@ -56,18 +116,22 @@ impl Report {
         Value::Object(map).to_string()
     }
 
-    /// The report as aligned human-readable lines.
+    /// The report as aligned text lines, without trailing spaces.
     pub fn to_human(&self) -> String {
-        let width = self.rows.iter().map(|r| r.0.len()).max().unwrap_or(0);
+        let shown = || self.rows.iter().filter(|r| r.in_text);
+        let width = shown().map(|r| r.key.len()).max().unwrap_or(0);
         let mut out = format!("{}\n", self.title);
-        for (k, v, unit) in &self.rows {
-            let shown = match v {
-                Value::Number(n) => n.as_f64().map_or_else(|| n.to_string(), significant),
+        for r in shown() {
+            let shown = match &r.value {
+                Value::Number(n) => n.as_f64().map_or_else(|| n.to_string(), number),
                 Value::String(s) => s.clone(),
-                Value::Null => "none".into(),
+                Value::Null => r.none.clone(),
                 other => other.to_string(),
             };
-            out.push_str(&format!("  {k:<width$} = {shown} {unit}\n"));
+            let unit = if r.value.is_number() { r.unit } else { "" };
+            let line = format!("  {:<width$} = {shown} {unit}", r.key);
+            out.push_str(line.trim_end());
+            out.push('\n');
         }
         out
     }
@@ -85,31 +149,30 @@ impl Report {
     }
 }
 
-/// `x` with 7 significant figures: fixed notation for 1e-3 <= |x| < 1e5, scientific otherwise.
-fn significant(x: f64) -> String {
-    if x == 0.0 {
-        return "0".into();
-    }
-    let exponent = x.abs().log10().floor();
-    if (-3.0..5.0).contains(&exponent) {
-        let decimals = (6.0 - exponent).max(0.0) as usize;
-        format!("{x:.decimals$}")
-    } else {
-        format!("{x:.6e}")
-    }
-}
-
 #[cfg(test)]
 mod tests {
-    use super::significant;
+    use super::*;
 
     #[test]
-    fn seven_significant_figures() {
-        assert_eq!(significant(9.517010630424188), "9.517011");
-        assert_eq!(significant(0.01659400272627634), "0.01659400");
-        assert_eq!(significant(7.076616500642095e-7), "7.076617e-7");
-        assert_eq!(significant(0.0), "0");
-        assert_eq!(significant(-0.5947867075549149), "-0.5947867");
-        assert_eq!(significant(1234.5678), "1234.568");
+    fn text_form_uses_the_json_number_format_and_no_trailing_spaces() {
+        let mut r = Report::new("title");
+        r.number("a_eq", 7.076616500642095e-7, "m").unwrap();
+        r.number("tabor", 9.5, "").unwrap();
+        r.optional("v_stick", None, "m/s", "no bouncing up to 2.0 m/s")
+            .unwrap();
+        let text = r.to_human();
+        assert!(
+            text.contains("a_eq    = 7.076616500642095e-7 m\n"),
+            "{text}"
+        );
+        assert!(text.contains("tabor   = 9.5\n"), "{text}");
+        assert!(
+            text.contains("v_stick = no bouncing up to 2.0 m/s\n"),
+            "{text}"
+        );
+        assert!(text.lines().all(|l| !l.ends_with(' ')));
+        let json: Value = serde_json::from_str(&r.to_json()).unwrap();
+        assert_eq!(json["v_stick"], Value::Null);
+        assert_eq!(json["warnings"], Value::Array(vec![]));
     }
 }

@@ -1,5 +1,7 @@
 //! The collision commands as a user runs them: JSON contract, files, bad input.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 mod common;
 
 use common::{json, run};
@@ -50,13 +52,14 @@ fn collide_writes_a_trajectory_csv() {
     ]);
     let text = std::fs::read_to_string(&path).unwrap();
     let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-    assert_eq!(lines.next(), Some("t,a,delta,delta_dot,energy"));
+    assert_eq!(lines.next(), Some("t,a,delta,delta_dot,energy,beta"));
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
     assert!(rows.len() > 10);
     assert_eq!(rows[0][2], 0.0); // delta = 0 at first contact (Section 2.6)
     assert_eq!(rows[0][3], 0.045); // delta_dot = V_in
+    assert!((rows[0][5] / 0.0101 - 1.0).abs() < 1e-9); // beta = (1 + eps) k
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
@@ -160,7 +163,7 @@ fn bad_collision_input() {
         assert_eq!(code, 2, "{args:?}: {err}");
         assert!(out.is_empty());
         assert!(
-            err.contains(flag) && err.contains("allowed range"),
+            err.contains(flag) && err.contains(": must be"),
             "{args:?}: {err}"
         );
     }

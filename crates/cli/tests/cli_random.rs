@@ -2,6 +2,8 @@
 //! infinity, exits with 0, 1 (computation failed) or 2 (usage), and with --json prints exactly one
 //! JSON object on success. Results are identical between reruns.
 
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
 mod common;
 
 use common::run;
@@ -29,11 +31,12 @@ const ODD: [&str; 22] = [
 #[test]
 fn random_arguments_never_panic_or_print_nan() {
     let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
-    let commands: [(&str, &[&str]); 5] = [
+    let commands: [(&str, &[&str]); 6] = [
         (
             "jkr",
             &[
                 "--radius",
+                "--radius2",
                 "--gamma-sv",
                 "--young",
                 "--poisson",
@@ -46,6 +49,7 @@ fn random_arguments_never_panic_or_print_nan() {
             "collide",
             &[
                 "--radius",
+                "--radius2",
                 "--t-vis",
                 "--v-in",
                 "--k",
@@ -64,7 +68,11 @@ fn random_arguments_never_panic_or_print_nan() {
                 "--rel-tol",
             ],
         ),
-        ("v-frag", &["--radius", "--t-vis", "--k", "--young"]),
+        (
+            "v-frag",
+            &["--radius", "--t-vis", "--k", "--young", "--t-vis-law"],
+        ),
+        ("material", &["--gamma-sv", "--poisson"]),
     ];
     let materials = ["co2", "h2o", "CO2", "ice", "/nonexistent.json"];
     let mut ok = 0;
@@ -76,10 +84,13 @@ fn random_arguments_never_panic_or_print_nan() {
             "crack-law" => &[("--beta", "2")],
             "collide" => &[("--t-vis", "1e-9"), ("--v-in", "0.045")],
             "v-stick" => &[("--t-vis", "1e-9")],
+            "material" => &[("--", "h2o")],
             _ => &[],
         };
         for (flag, good) in required {
-            args.push(flag.to_string());
+            if *flag != "--" {
+                args.push(flag.to_string());
+            }
             args.push(
                 if rng.next().is_multiple_of(3) {
                     rng.pick(&ODD)

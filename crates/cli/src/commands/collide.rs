@@ -1,97 +1,136 @@
 //! `stickiness collide`: one head-on collision.
 
-use super::KArgs;
-use crate::args::MaterialArgs;
+use crate::args::{GeometryArgs, KArgs, MaterialArgs, Setup, TVisArgs};
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
-use dynamics::{Collider, SolverOptions};
-use serde_json::Value;
+use contact::Warning;
+use dynamics::{Collider, SolverOptions, StickingCriterion};
+use greenwood::format::number;
 use std::io::Write;
 use std::path::PathBuf;
 
-/// One head-on collision of two identical spheres (Arakawa & Krijt 2021, Sections 2.6 and 4).
+/// Arguments of `collide` (its help text is on `Command::Collide`).
 #[derive(Debug, Args)]
 pub struct CollideArgs {
     #[command(flatten)]
     pub material: MaterialArgs,
-    /// Viscoelastic relaxation time T_vis (s, > 0).
-    #[arg(long, allow_hyphen_values = true)]
-    pub t_vis: f64,
+    #[command(flatten)]
+    pub geometry: GeometryArgs,
+    #[command(flatten)]
+    pub t_vis: TVisArgs,
     /// Impact speed V_in (m/s, > 0).
     #[arg(long, allow_hyphen_values = true)]
     pub v_in: f64,
     #[command(flatten)]
     pub k: KArgs,
-    /// Write the trajectory (t, a, delta, delta_dot, energy; SI) to this CSV file.
-    #[arg(long)]
+    /// Write the trajectory (t, a, delta, delta_dot, energy, beta; SI) to this CSV file.
+    #[arg(long, value_name = "FILE.csv")]
     pub trajectory: Option<PathBuf>,
+    /// Keep integrating a sticking collision up to this time (s) before deciding that it sticks,
+    /// to record the whole spiral towards the JKR equilibrium (Figure 2) in --trajectory.
+    #[arg(long, allow_hyphen_values = true)]
+    pub t_end: Option<f64>,
 }
 
 /// Runs the command.
 pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
-    let contact = args.material.contact()?;
+    let mut setup = Setup::new(&args.material, &args.geometry)?;
+    let t_vis = args.t_vis.resolve(&mut setup, None)?;
+    setup.with_input("v_in", args.v_in);
+    setup.with_input("k", args.k.k);
     let law = args.k.crack_law()?;
     let opts = SolverOptions {
         record_trajectory: args.trajectory.is_some(),
+        decide_after: args.t_end.unwrap_or(0.0),
         ..Default::default()
     };
-    let collider = Collider::new(contact, &law, args.t_vis)?.with_options(opts)?;
+    if let Some(t) = args.t_end {
+        setup.with_input("t_end", t);
+    }
+    let collider = Collider::new(setup.contact, law, t_vis)?.with_options(opts)?;
+    // open the trajectory file first: a path that cannot be written is bad input, found at once
+    let file = match &args.trajectory {
+        Some(path) => Some(std::fs::File::create(path).map_err(|e| {
+            CliError::Usage(format!(
+                "--trajectory {}: cannot write the file: {e}",
+                path.display()
+            ))
+        })?),
+        None => None,
+    };
     let c = collider.collide(args.v_in)?;
-    if let Some(path) = &args.trajectory {
-        write_trajectory(path, args, &c).map_err(|e| {
-            CliError::Compute(format!("cannot write --trajectory {}: {e}", path.display()))
+    if let (Some(path), Some(file)) = (&args.trajectory, file) {
+        write_trajectory(file, &setup, &c).map_err(|e| {
+            CliError::Usage(format!(
+                "--trajectory {}: cannot write the file: {e}",
+                path.display()
+            ))
         })?;
     }
     let mut r = Report::new(format!(
-        "Collision of two {} spheres, R1 = {:?} m, T_vis = {:?} s, V_in = {:?} m/s, k = {:?}",
-        args.material.material, args.material.radius, args.t_vis, args.v_in, args.k.k
+        "Collision of {}, T_vis = {} s, V_in = {} m/s, k = {}",
+        setup.describe(),
+        number(t_vis),
+        number(args.v_in),
+        number(args.k.k)
     ));
-    r.warn_about(&contact);
-    r.value("outcome", Value::from(c.outcome.as_str()), "");
+    r.warn(setup.contact.warnings());
+    r.warn(Warning::for_speed("v_in", args.v_in));
+    r.text("outcome", c.outcome.as_str());
     r.number("e", c.e, "")?;
     r.number("v_out", c.v_out, "m/s")?;
-    match c.contact_time {
-        Some(t) => r.number("contact_time", t, "s")?,
-        None => r.value("contact_time", Value::Null, "(the contact never ends)"),
-    }
+    r.optional(
+        "contact_time",
+        c.contact_time,
+        "s",
+        "none (the contact never ends)",
+    )?;
     if let Some(crit) = c.sticking_criterion {
         let name = match crit {
-            dynamics::StickingCriterion::EnergyBound => "energy_bound",
-            dynamics::StickingCriterion::Oscillations => "oscillations",
+            StickingCriterion::EnergyBound => "energy_bound",
+            StickingCriterion::Oscillations => "oscillations",
         };
-        r.value("sticking_criterion", Value::from(name), "");
+        r.text("sticking_criterion", name);
     }
-    r.number("v_stick_jkr", contact.v_stick_jkr(), "m/s")?;
+    r.number("v_stick_jkr", setup.contact.v_stick_jkr(), "m/s")?;
+    r.input(setup.input);
     Ok(r)
 }
 
 fn write_trajectory(
-    path: &PathBuf,
-    args: &CollideArgs,
+    file: std::fs::File,
+    setup: &Setup,
     c: &dynamics::Collision,
 ) -> std::io::Result<()> {
-    let mut f = std::io::BufWriter::new(std::fs::File::create(path)?);
+    let mut f = std::io::BufWriter::new(file);
     writeln!(
         f,
-        "# trajectory of one head-on collision (stickiness collide)"
+        "# trajectory of one head-on collision (stickiness collide): {}",
+        setup.describe()
     )?;
-    writeln!(
-        f,
-        "# material = {}, radius = {:?} m, t_vis = {:?} s, v_in = {:?} m/s, k = {:?}",
-        args.material.material, args.material.radius, args.t_vis, args.v_in, args.k.k
-    )?;
+    let inputs: Vec<String> = setup
+        .input
+        .iter()
+        .map(|(k, v)| format!("{k} = {v}"))
+        .collect();
+    writeln!(f, "# {}", inputs.join(", "))?;
     writeln!(f, "# outcome = {}", c.outcome.as_str())?;
     writeln!(
         f,
-        "# units: t [s], a [m], delta [m], delta_dot [m/s], energy [J]"
+        "# units: t [s], a [m], delta [m], delta_dot [m/s], energy [J], beta [dimensionless]"
     )?;
-    writeln!(f, "t,a,delta,delta_dot,energy")?;
+    writeln!(f, "t,a,delta,delta_dot,energy,beta")?;
     for p in &c.trajectory {
         writeln!(
             f,
-            "{:e},{:e},{:e},{:e},{:e}",
-            p.t, p.a, p.delta, p.delta_dot, p.energy
+            "{},{},{},{},{},{}",
+            number(p.t),
+            number(p.a),
+            number(p.delta),
+            number(p.delta_dot),
+            number(p.energy),
+            number(p.beta)
         )?;
     }
     f.flush()

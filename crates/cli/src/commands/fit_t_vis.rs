@@ -1,21 +1,23 @@
 //! `stickiness fit-t-vis`: the relaxation time that reproduces a measured V_stick.
 
-use super::{KArgs, SearchArgs};
-use crate::args::MaterialArgs;
+use crate::args::{GeometryArgs, KArgs, MaterialArgs, SearchArgs, Setup};
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
+use greenwood::format::number;
 
 /// T_vis for a measured V_stick, with the range for its uncertainty (Sections 5.1-5.2).
 #[derive(Debug, Args)]
 pub struct FitTVisArgs {
     #[command(flatten)]
     pub material: MaterialArgs,
-    /// Measured threshold velocity for sticking V_stick (m/s, > 0).
+    #[command(flatten)]
+    pub geometry: GeometryArgs,
+    /// Measured threshold velocity for sticking V_stick (m/s, above V_stick,JKR).
     #[arg(long, allow_hyphen_values = true)]
     pub v_stick: f64,
     /// Uncertainty of the measured V_stick (m/s, 0 <= dV < V_stick).
-    #[arg(long, default_value_t = 0.0, allow_hyphen_values = true)]
+    #[arg(long, default_value = "0.0", allow_hyphen_values = true)]
     pub v_stick_err: f64,
     #[command(flatten)]
     pub k: KArgs,
@@ -25,23 +27,36 @@ pub struct FitTVisArgs {
 
 /// Runs the command.
 pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
-    let contact = args.material.contact()?;
+    let mut setup = Setup::new(&args.material, &args.geometry)?;
+    setup.with_input("v_stick", args.v_stick);
+    setup.with_input("v_stick_err", args.v_stick_err);
+    setup.with_input("k", args.k.k);
+    let opts = args.search.options(&mut setup);
     let law = args.k.crack_law()?;
-    let fit = thresholds::fit_t_vis(
-        &contact,
-        &law,
-        args.v_stick,
-        args.v_stick_err,
-        &args.search.options(),
-    )?;
+    let fit = thresholds::fit_t_vis(&setup.contact, &law, args.v_stick, args.v_stick_err, &opts)?;
     let mut r = Report::new(format!(
-        "Relaxation time for V_stick = {:?} ± {:?} m/s, two {} spheres, R1 = {:?} m, k = {:?}",
-        args.v_stick, args.v_stick_err, args.material.material, args.material.radius, args.k.k
+        "Relaxation time for V_stick = {} ± {} m/s, {}, k = {}",
+        number(args.v_stick),
+        number(args.v_stick_err),
+        setup.describe(),
+        number(args.k.k)
     ));
-    r.warn_about(&contact);
+    r.warn(setup.contact.warnings());
+    // feeding t_vis_max back into v-stick must find V_stick + dV again
+    let top = args.v_stick + args.v_stick_err;
+    let default_limit = opts.v_max_for(fit.v_stick_jkr);
+    if args.search.v_max.is_none() && top > default_limit {
+        r.warn([format!(
+            "V_stick = {} m/s is above the default search limit of v-stick and v-frag (1000 V_stick,JKR = {} m/s): pass --v-max {} to them to find it from the fitted T_vis",
+            number(top),
+            number(default_limit),
+            number((2.0 * top).min(thresholds::V_SEARCH_LIMIT))
+        )]);
+    }
     r.number("t_vis", fit.t_vis, "s")?;
     r.number("t_vis_min", fit.t_vis_min, "s")?;
     r.number("t_vis_max", fit.t_vis_max, "s")?;
     r.number("v_stick_jkr", fit.v_stick_jkr, "m/s")?;
+    r.input(setup.input);
     Ok(r)
 }

@@ -1,24 +1,21 @@
 //! `stickiness v-frag`: the fragmentation velocity of aggregates, V_frag = 10 V_stick.
 
-use super::{check_t_vis, v_stick::optional, KArgs, SearchArgs};
-use crate::args::MaterialArgs;
+use super::{no_bouncing_below, v_stick_rows};
+use crate::args::{GeometryArgs, KArgs, MaterialArgs, SearchArgs, Setup, TVisArgs};
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
-use serde_json::Value;
-use thresholds::TVisLaw;
+use greenwood::format::number;
 
 /// V_frag = 10 V_stick for aggregates of monomers of radius R1 (Arakawa & Krijt 2021, Section 6).
 #[derive(Debug, Args)]
 pub struct VFragArgs {
     #[command(flatten)]
     pub material: MaterialArgs,
-    /// Viscoelastic relaxation time T_vis (s, >= 0; 0, the default, is the JKR limit).
-    #[arg(long, allow_hyphen_values = true, conflicts_with = "t_vis_law")]
-    pub t_vis: Option<f64>,
-    /// Size law for T_vis(R1) (Section 5.3): co2 = 1e-11 s (R1/1 um)^1.11, h2o = 1e-10 s (R1/1.5 um)^1.11.
-    #[arg(long, value_parser = ["co2", "h2o"])]
-    pub t_vis_law: Option<String>,
+    #[command(flatten)]
+    pub geometry: GeometryArgs,
+    #[command(flatten)]
+    pub t_vis: TVisArgs,
     #[command(flatten)]
     pub k: KArgs,
     #[command(flatten)]
@@ -27,41 +24,27 @@ pub struct VFragArgs {
 
 /// Runs the command.
 pub fn run(args: &VFragArgs) -> Result<Report, CliError> {
-    let contact = args.material.contact()?;
-    let t_vis = match (&args.t_vis, &args.t_vis_law) {
-        (Some(t), _) => *t,
-        (None, Some(name)) => TVisLaw::from_name(name)
-            .ok_or_else(|| {
-                CliError::Usage(format!(
-                    "--t-vis-law = {name} is not one of the allowed laws co2, h2o"
-                ))
-            })?
-            .t_vis(contact.r1()),
-        (None, None) => 0.0,
-    };
-    check_t_vis(t_vis)?;
+    let mut setup = Setup::new(&args.material, &args.geometry)?;
+    let t_vis = args.t_vis.resolve(&mut setup, Some(0.0))?;
+    setup.with_input("k", args.k.k);
+    let opts = args.search.options(&mut setup);
     let law = args.k.crack_law()?;
-    let th = thresholds::sticking_thresholds(&contact, &law, t_vis, &args.search.options())?;
+    let f = thresholds::fragmentation(&setup.contact, &law, t_vis, &opts)?;
+    let v_max = f.no_bouncing_below.unwrap_or(opts.v_max_for(f.v_stick_jkr));
+    setup.with_input("v_max", v_max);
     let mut r = Report::new(format!(
-        "Fragmentation velocity of aggregates of {} monomers, R1 = {:?} m, T_vis = {t_vis:?} s, k = {:?}",
-        args.material.material, args.material.radius, args.k.k
+        "Fragmentation velocity of aggregates of {} monomers, T_vis = {} s, k = {}",
+        setup.describe(),
+        number(t_vis),
+        number(args.k.k)
     ));
-    r.warn_about(&contact);
-    match th.v_stick {
-        Some(v) => r.number("v_frag", thresholds::v_frag(v), "m/s")?,
-        None => r.value(
-            "v_frag",
-            Value::Null,
-            "(no bouncing below no_bouncing_below)",
-        ),
-    }
-    optional(&mut r, "v_stick", th.v_stick)?;
+    r.warn(setup.contact.warnings());
+    v_stick_rows(&mut r, "v_frag", f.v_frag, v_max)?;
+    v_stick_rows(&mut r, "v_stick", f.v_stick, v_max)?;
     r.number("t_vis", t_vis, "s")?;
-    r.number("v_frag_jkr", thresholds::v_frag(th.v_stick_jkr), "m/s")?;
-    r.number("v_stick_jkr", th.v_stick_jkr, "m/s")?;
-    match th.v_stick {
-        Some(_) => r.value("no_bouncing_below", Value::Null, ""),
-        None => r.number("no_bouncing_below", th.v_max, "m/s")?,
-    }
+    r.number("v_frag_jkr", f.v_frag_jkr, "m/s")?;
+    r.number("v_stick_jkr", f.v_stick_jkr, "m/s")?;
+    no_bouncing_below(&mut r, f.v_stick, v_max);
+    r.input(setup.input);
     Ok(r)
 }

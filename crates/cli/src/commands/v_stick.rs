@@ -1,20 +1,22 @@
 //! `stickiness v-stick`: the threshold velocity for sticking and the onset of double collisions.
 
-use super::{check_t_vis, KArgs, SearchArgs};
-use crate::args::MaterialArgs;
+use super::{no_bouncing_below, v_stick_rows};
+use crate::args::{GeometryArgs, KArgs, MaterialArgs, SearchArgs, Setup, TVisArgs};
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
-use serde_json::Value;
+use greenwood::format::number;
 
-/// V_stick and V_double_onset (Arakawa & Krijt 2021, Sections 4.4 and 5).
+/// V_stick (double collision -> bouncing) and V_double_onset (sticking -> double collision)
+/// (Arakawa & Krijt 2021, Sections 4.4 and 5).
 #[derive(Debug, Args)]
 pub struct VStickArgs {
     #[command(flatten)]
     pub material: MaterialArgs,
-    /// Viscoelastic relaxation time T_vis (s, >= 0; 0 is the JKR limit).
-    #[arg(long, allow_hyphen_values = true)]
-    pub t_vis: f64,
+    #[command(flatten)]
+    pub geometry: GeometryArgs,
+    #[command(flatten)]
+    pub t_vis: TVisArgs,
     #[command(flatten)]
     pub k: KArgs,
     #[command(flatten)]
@@ -23,40 +25,29 @@ pub struct VStickArgs {
 
 /// Runs the command.
 pub fn run(args: &VStickArgs) -> Result<Report, CliError> {
-    check_t_vis(args.t_vis)?;
-    let contact = args.material.contact()?;
+    let mut setup = Setup::new(&args.material, &args.geometry)?;
+    let t_vis = args.t_vis.resolve(&mut setup, None)?;
+    setup.with_input("k", args.k.k);
+    let opts = args.search.options(&mut setup);
     let law = args.k.crack_law()?;
-    let th = thresholds::sticking_thresholds(&contact, &law, args.t_vis, &args.search.options())?;
+    let th = thresholds::sticking_thresholds(&setup.contact, &law, t_vis, &opts)?;
+    setup.with_input("v_max", th.v_max);
     let mut r = Report::new(format!(
-        "Sticking thresholds of two {} spheres, R1 = {:?} m, T_vis = {:?} s, k = {:?}",
-        args.material.material, args.material.radius, args.t_vis, args.k.k
+        "Sticking thresholds of {}, T_vis = {} s, k = {}",
+        setup.describe(),
+        number(t_vis),
+        number(args.k.k)
     ));
-    r.warn_about(&contact);
-    optional(&mut r, "v_stick", th.v_stick)?;
-    optional(&mut r, "v_double_onset", th.v_double_onset)?;
+    r.warn(setup.contact.warnings());
+    v_stick_rows(&mut r, "v_stick", th.v_stick, th.v_max)?;
+    r.optional(
+        "v_double_onset",
+        th.v_double_onset,
+        "m/s",
+        format!("every collision sticks up to {} m/s", number(th.v_max)),
+    )?;
     r.number("v_stick_jkr", th.v_stick_jkr, "m/s")?;
-    match th.v_stick {
-        Some(_) => r.value("no_bouncing_below", Value::Null, ""),
-        None => r.number("no_bouncing_below", th.v_max, "m/s")?,
-    }
+    no_bouncing_below(&mut r, th.v_stick, th.v_max);
+    r.input(setup.input);
     Ok(r)
-}
-
-/// A threshold that may be beyond the search: `null` in JSON and a sentence in text.
-pub fn optional(r: &mut Report, key: &str, v: Option<f64>) -> Result<(), CliError> {
-    match v {
-        Some(v) => r.number(key, v, "m/s"),
-        None => {
-            r.value(
-                key,
-                Value::Null,
-                if key == "v_stick" {
-                    "(no bouncing below no_bouncing_below)"
-                } else {
-                    "(every collision sticks below no_bouncing_below)"
-                },
-            );
-            Ok(())
-        }
-    }
 }

@@ -1,6 +1,6 @@
 //! Running the `stickiness` binary in tests.
 
-#![allow(dead_code)]
+#![allow(dead_code, clippy::unwrap_used, clippy::expect_used)]
 
 use std::ffi::OsStr;
 use std::process::Command;

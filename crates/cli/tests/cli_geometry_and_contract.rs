@@ -1,0 +1,318 @@
+//! The CLI contract of the geometry and usability issue: `--radius2`/`--wall`, `--t-vis-law`
+//! everywhere, `material`, the `"input"` object, warnings, file errors, one number format.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+mod common;
+
+use common::{json, run};
+use serde_json::Value;
+
+fn f(v: &Value) -> f64 {
+    v.as_f64().unwrap()
+}
+
+/// `--radius2` defaults to `--radius`; V_stick,JKR on a wall is 2^(1/6) times that of identical
+/// spheres (R = R1 and m* = m1 instead of R1/2 and m1/2; Section 5.1 formula); the text names
+/// the geometry.
+#[test]
+fn geometry_flags() {
+    let id = json(&["jkr", "--json"]);
+    let same = json(&["jkr", "--radius2", "0.00006", "--json"]);
+    assert_eq!(id, same);
+    let wall = json(&["jkr", "--wall", "--json"]);
+    let ratio = f(&wall["v_stick_jkr"]) / f(&id["v_stick_jkr"]);
+    assert!((ratio - 2f64.powf(1.0 / 6.0)).abs() < 1e-12);
+    assert_eq!(wall["input"]["radius2"], Value::Null);
+    assert_eq!(wall["input"]["wall"], Value::Bool(true));
+    assert_eq!(id["input"]["radius2"].as_f64(), Some(60e-6));
+    let (_, text, _) = run(&["jkr", "--radius", "60e-6", "--radius2", "30e-6"]);
+    assert!(text.contains("two spheres of 60 um and 30 um"), "{text}");
+    let (_, text, _) = run(&["v-stick", "--wall", "--t-vis", "1e-12"]);
+    assert!(text.contains("a 60 um sphere on a wall"), "{text}");
+    let (code, _, err) = run(&["v-stick", "--wall", "--radius2", "1e-5", "--t-vis", "1e-9"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--wall") && err.contains("--radius2"), "{err}");
+    let (code, _, err) = run(&["jkr", "--radius2", "-3"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--radius2 = -3.0: must be > 0"), "{err}");
+}
+
+/// `--t-vis-law` (any case) on collide and v-stick gives T_vis,H2O(90 um) = 9.4e-9 s (Section 5.3).
+#[test]
+fn t_vis_law_everywhere() {
+    for cmd in [
+        vec![
+            "v-stick",
+            "--material",
+            "H2O",
+            "--radius",
+            "90e-6",
+            "--t-vis-law",
+            "H2O",
+        ],
+        vec![
+            "collide",
+            "--material",
+            "h2o",
+            "--radius",
+            "90e-6",
+            "--t-vis-law",
+            "h2o",
+            "--v-in",
+            "1",
+        ],
+        vec![
+            "v-frag",
+            "--material",
+            "h2o",
+            "--radius",
+            "90e-6",
+            "--t-vis-law",
+            "H2o",
+        ],
+    ] {
+        let mut args = cmd.clone();
+        args.push("--json");
+        let j = json(&args);
+        let t = f(&j["input"]["t_vis"]);
+        assert!((t / 9.4e-9 - 1.0).abs() < 0.005, "{cmd:?}: {t}");
+        assert_eq!(j["input"]["t_vis_law"], "h2o");
+    }
+    let (code, _, err) = run(&["v-stick"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--t-vis"), "{err}");
+    let (code, _, _) = run(&["v-stick", "--t-vis", "1e-9", "--t-vis-law", "co2"]);
+    assert_eq!(code, 2);
+}
+
+/// `material` prints the four constants after overrides; CO2's come from the sound speeds
+/// (Section 3.2: E = 10.7 GPa, nu = 0.26).
+#[test]
+fn material_command() {
+    let j = json(&["material", "CO2", "--json"]);
+    assert!((f(&j["young"]) / 1e9 - 10.708).abs() < 0.001);
+    assert!((f(&j["poisson"]) - 0.26066).abs() < 1e-5);
+    assert_eq!(f(&j["gamma_sv"]), 0.08);
+    let j = json(&["material", "h2o", "--density", "917", "--json"]);
+    assert_eq!(f(&j["density"]), 917.0);
+    for key in ["gamma_sv", "young", "poisson", "density"] {
+        assert!(j[key].is_number(), "{key}");
+    }
+}
+
+/// Every JSON object carries the inputs as used, so a scripted sweep needs no bookkeeping.
+#[test]
+fn every_json_has_its_inputs() {
+    let common = [
+        "material", "gamma_sv", "young", "poisson", "density", "radius", "radius2", "wall",
+    ];
+    for (args, own) in [
+        (vec!["jkr"], vec![]),
+        (
+            vec!["collide", "--t-vis", "1e-9", "--v-in", "0.045"],
+            vec!["t_vis", "v_in", "k"],
+        ),
+        (
+            vec!["v-stick", "--t-vis", "1e-10"],
+            vec!["t_vis", "k", "rel_tol", "v_max"],
+        ),
+        (vec!["v-frag"], vec!["t_vis", "k", "rel_tol", "v_max"]),
+        (
+            vec!["fit-t-vis", "--v-stick", "0.03"],
+            vec!["v_stick", "v_stick_err", "k"],
+        ),
+    ] {
+        let mut a = args.clone();
+        a.push("--json");
+        let j = json(&a);
+        for key in common.iter().chain(own.iter()) {
+            assert!(
+                j["input"].get(*key).is_some(),
+                "{args:?}: no input.{key}: {j}"
+            );
+        }
+        assert!(j["warnings"].is_array());
+    }
+}
+
+/// Section 5.1: V_stick > V_stick,JKR for every T_vis > 0, so fitting a value at or below
+/// V_stick,JKR (1.66e-2 m/s for CO2, 60 um) is bad input that gives V_stick,JKR.
+#[test]
+fn fit_below_jkr_is_refused() {
+    let (code, out, err) = run(&["fit-t-vis", "--v-stick", "0.016"]);
+    assert_eq!(code, 2, "{out}");
+    assert!(
+        err.contains("--v-stick = 0.016") && err.contains("0.01659400272627634"),
+        "{err}"
+    );
+    assert!(out.is_empty());
+}
+
+/// A target above v-stick's default limit (1000 V_stick,JKR = 16.6 m/s): fit-t-vis finds it,
+/// says how far v-stick must search, and v-stick at the fitted T_vis gives the target back.
+#[test]
+fn fit_above_the_default_limit_round_trips() {
+    let j = json(&["fit-t-vis", "--v-stick", "20", "--json"]);
+    let t = f(&j["t_vis"]);
+    let w = j["warnings"].as_array().unwrap();
+    assert!(
+        w.iter()
+            .any(|w| w.as_str().unwrap().contains("--v-max 40.0")),
+        "{j}"
+    );
+    let t_arg = t.to_string();
+    let back = json(&["v-stick", "--t-vis", &t_arg, "--v-max", "40", "--json"]);
+    let v = f(&back["v_stick"]);
+    assert!((v / 20.0 - 1.0).abs() < 1e-3, "{v}");
+}
+
+/// Valid but implausible input warns, on stderr and in the JSON.
+#[test]
+fn implausible_input_warns() {
+    let (code, out, err) = run(&["jkr", "--radius", "60", "--json"]);
+    assert_eq!(code, 0);
+    assert!(err.contains("did you mean 60e-6 m?"), "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["warnings"].as_array().unwrap().len(), 1);
+    let (code, out, err) = run(&["collide", "--t-vis", "1e-9", "--v-in", "2000", "--json"]);
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    assert!(
+        j["warnings"][0]
+            .as_str()
+            .unwrap()
+            .contains("v_in = 2000.0 m/s"),
+        "{j}"
+    );
+}
+
+/// Material files: errors name the file and the field, never a flag that was not given; an
+/// override fixes a bad field and is then named itself; titles use the file's stem.
+#[test]
+fn material_file_errors_name_the_file() {
+    let dir = std::env::temp_dir().join(format!("stickiness-files-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("ice.json");
+    let p = path.to_str().unwrap();
+    std::fs::write(
+        &path,
+        r#"{"gamma_sv": 0.1, "young": 7e9, "poisson": 0.25, "density": -930}"#,
+    )
+    .unwrap();
+    let (code, _, err) = run(&["jkr", "--material", p]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains(&format!("{p}: density = -930.0: must be > 0")),
+        "{err}"
+    );
+    assert!(!err.contains("--density"), "{err}");
+    let (code, text, _) = run(&["jkr", "--material", p, "--density", "930"]);
+    assert_eq!(code, 0);
+    assert!(
+        text.starts_with("JKR contact of two identical spheres of 60 um of ice\n"),
+        "{text}"
+    );
+    let (code, _, err) = run(&["jkr", "--material", p, "--density", "-1"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("--density = -1.0"), "{err}");
+    let missing = dir.join("nothing.json");
+    let (code, _, err) = run(&["jkr", "--material", missing.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("not found") && err.contains("nothing.json"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A trajectory path that cannot be written is bad input (exit 2) that names the path.
+#[test]
+fn unwritable_trajectory_is_bad_input() {
+    let (code, _, err) = run(&[
+        "collide",
+        "--t-vis",
+        "1e-9",
+        "--v-in",
+        "0.04",
+        "--trajectory",
+        "/nonexistent/t.csv",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("/nonexistent/t.csv"), "{err}");
+}
+
+/// Text and JSON print the same digits (shortest round-trip), with no trailing spaces, and
+/// `no bouncing up to X m/s` where V_stick does not exist.
+#[test]
+fn one_number_format() {
+    let args = ["v-stick", "--t-vis", "1e-6", "--v-max", "2"];
+    let (_, text, _) = run(&args);
+    assert!(
+        text.contains("v_stick        = no bouncing up to 2.0 m/s"),
+        "{text}"
+    );
+    assert!(text.lines().all(|l| !l.ends_with(' ')), "{text:?}");
+    let (_, text, _) = run(&["jkr"]);
+    let j = json(&["jkr", "--json"]);
+    for key in ["a_eq", "tabor", "f_crit", "v_stick_jkr"] {
+        let shown = j[key].to_string();
+        assert!(
+            text.contains(&format!("= {shown}")),
+            "{key}: {shown} not in {text}"
+        );
+    }
+    assert!(text.contains("of 60 um of co2"), "{text}");
+}
+
+/// `--help` shows defaults in the same format, and collide's help explains the sign of v_out.
+#[test]
+fn help_texts() {
+    let (_, help, _) = run(&["v-stick", "--help"]);
+    for default in [
+        "[default: 0.00006]",
+        "[default: 0.01]",
+        "[default: 1e-6]",
+        "[default: co2]",
+    ] {
+        assert!(help.contains(default), "{default} not in {help}");
+    }
+    let (_, help, _) = run(&["collide", "--help"]);
+    assert!(
+        help.contains("v_out < 0") && help.contains("v_out > 0"),
+        "{help}"
+    );
+    assert!(help.contains("--t-end") && help.contains("--radius2") && help.contains("--wall"));
+}
+
+/// `--t-end` keeps a sticking collision going: Figure 2's spiral towards the JKR point.
+#[test]
+fn t_end_records_the_spiral() {
+    let dir = std::env::temp_dir().join(format!("stickiness-spiral-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("spiral.csv");
+    let p = path.to_str().unwrap();
+    let j = json(&[
+        "collide",
+        "--t-vis",
+        "1e-9",
+        "--v-in",
+        "0.035",
+        "--t-end",
+        "2e-5",
+        "--trajectory",
+        p,
+        "--json",
+    ]);
+    assert_eq!(j["outcome"], "sticking");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let last: Vec<f64> = text
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|x| x.parse().unwrap())
+        .collect();
+    assert!(last[0] >= 2e-5, "integrated to {}", last[0]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
