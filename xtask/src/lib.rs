@@ -22,11 +22,11 @@ pub const CHECK_REL_TOL: f64 = 1e-4;
 /// precision they are written ([`CSV_DIGITS`]) and within [`CHECK_REL_TOL`]. Returns the
 /// differences found (empty when the data are current).
 pub fn compare_with_committed(
-    figs: &[(usize, Vec<table::Table>)],
+    tables: &[table::Table],
     data_dir: &std::path::Path,
 ) -> Result<Vec<String>, figures::Error> {
     let mut diffs = Vec::new();
-    for t in figs.iter().flat_map(|(_, t)| t) {
+    for t in tables {
         let path = data_dir.join(&t.file);
         let text = std::fs::read_to_string(&path)
             .map_err(|e| format!("cannot read committed {}: {e}", path.display()))?;

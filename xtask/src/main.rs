@@ -1,32 +1,40 @@
 //! `cargo xtask figures [--check]`: regenerate (or check) the paper's figures.
 
+use clap::{Parser, Subcommand};
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 use std::sync::Mutex;
 use std::time::Instant;
-use xtask::figures::{self, Resolution};
+use xtask::figures::{self, Figures, Resolution};
+use greenwood::format::number;
 use xtask::{compare_with_committed, plot, workspace_root, CHECK_REL_TOL, CSV_DIGITS};
 
-const USAGE: &str = "usage: cargo xtask figures [--check]
-  figures          compute Figures 1-7, write data/fig*.csv and docs/figures/fig*.svg
-  figures --check  recompute and compare with the committed data/fig*.csv (relative tolerance 1e-4)";
+/// Project automation for the stickiness workspace.
+#[derive(Debug, Parser)]
+#[command(name = "cargo xtask")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Compute Figures 1-7 and the sphere-on-wall figure; write data/fig*.csv and
+    /// docs/figures/fig*.svg.
+    Figures {
+        /// Recompute and compare with the committed data/fig*.csv (relative tolerance 1e-4)
+        /// instead of writing.
+        #[arg(long)]
+        check: bool,
+    },
+}
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let check = match args
-        .iter()
-        .map(String::as_str)
-        .collect::<Vec<_>>()
-        .as_slice()
-    {
-        ["figures"] => false,
-        ["figures", "--check"] => true,
-        _ => {
-            eprintln!("{USAGE}");
-            return ExitCode::from(2);
-        }
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Figures { check } => run_figures(check),
     };
-    match run(check) {
+    match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e}");
@@ -35,7 +43,7 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(check: bool) -> Result<(), figures::Error> {
+fn run_figures(check: bool) -> Result<(), figures::Error> {
     let start = Instant::now();
     // On a terminal one line is rewritten; in a log, a line at 0, 50 and 100 % of each figure.
     let terminal = std::io::stderr().is_terminal();
@@ -54,27 +62,30 @@ fn run(check: bool) -> Result<(), figures::Error> {
         }
         *l = line;
     };
-    let figs = figures::all(Resolution::Full, &progress)?;
+    let figs = Figures::compute(Resolution::Full, &progress)?;
+    let tables = figs.tables();
     eprintln!();
     let root = workspace_root();
     let data = root.join("data");
     if check {
-        let diffs = compare_with_committed(&figs, &data)?;
+        let diffs = compare_with_committed(&tables, &data)?;
         if !diffs.is_empty() {
             return Err(format!(
-                "the recomputed figure data differ from data/ beyond the relative tolerance {CHECK_REL_TOL}:\n  {}\nrun `cargo xtask figures` and review the change",
+                "the recomputed figure data differ from data/ beyond the relative tolerance {}:\n  {}\nrun `cargo xtask figures` and review the change",
+                number(CHECK_REL_TOL),
                 diffs.join("\n  ")
             )
             .into());
         }
         eprintln!(
-            "figures --check: all figure data agree with data/ (relative tolerance {CHECK_REL_TOL}) in {:.1} s",
+            "figures --check: all figure data agree with data/ (relative tolerance {}) in {:.1} s",
+            number(CHECK_REL_TOL),
             start.elapsed().as_secs_f64()
         );
         return Ok(());
     }
     std::fs::create_dir_all(&data)?;
-    for table in figs.iter().flat_map(|(_, t)| t) {
+    for table in &tables {
         std::fs::write(data.join(&table.file), table.to_csv(CSV_DIGITS))?;
     }
     plot::draw_all(&figs, &root.join("docs").join("figures"))?;

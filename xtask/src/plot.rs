@@ -1,7 +1,15 @@
-//! SVG pictures of the figure tables (plotters). Axes carry units; log axes where the paper uses them.
+//! SVG pictures of the figures (plotters), drawn from the typed figure structs. Axes carry units;
+//! log axes where the paper uses them, with ticks at 1, 2 and 5 of each decade when an axis spans
+//! fewer than two decades, and ranges that fit the data.
 
-use crate::figures::Error;
-use crate::table::Table;
+use crate::figures::{
+    Error, Figure1, Figure2, Figure3, Figure4, Figure5, Figure6, Figure7, FigureWall, Figures,
+    ThresholdCurve, CO2_EXPERIMENT, H2O_EXPERIMENT, V_COL_MAX, WALL_GEOMETRIES,
+};
+use dynamics::Outcome;
+use greenwood::format::number;
+use plotters::coord::combinators::WithKeyPoints;
+use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -18,16 +26,78 @@ const COLOURS: [RGBColor; 5] = [
 const GREY: RGBColor = RGBColor(128, 128, 128);
 const BAND: RGBColor = RGBColor(255, 221, 87);
 const FONT: (&str, u32) = ("sans-serif", 18);
+/// Axes spanning fewer decades than this get ticks at 2 and 5 of each decade too (with three
+/// or more decades the decade labels alone are dense enough).
+const FEW_DECADES: f64 = 2.999;
 
 type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
-type LogLog<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogCoord<f64>, LogCoord<f64>>>;
+type LogAxis = WithKeyPoints<LogCoord<f64>>;
+type LogLog<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogAxis, LogAxis>>;
 
-/// A chart with log axes, labelled in scientific notation.
+/// Tick values of a log axis over `[lo, hi]`: each decade, and 2 and 5 of each decade when the
+/// axis spans fewer than [`FEW_DECADES`] decades.
+pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
+    let mantissas: &[f64] = if (hi / lo).log10() < FEW_DECADES {
+        &[1.0, 2.0, 5.0]
+    } else {
+        &[1.0]
+    };
+    let mut out = Vec::new();
+    let mut decade = 10f64.powf(lo.log10().floor());
+    while decade <= hi * 1.000_001 {
+        for m in mantissas {
+            let v = m * decade;
+            if v >= lo * 0.999_999 && v <= hi * 1.000_001 {
+                out.push(v);
+            }
+        }
+        decade *= 10.0;
+    }
+    out
+}
+
+/// A log range that holds `values` snugly: from the 1-2-5 value at or below the smallest to the
+/// one at or above the largest (so no empty decade is left on either side).
+pub fn log_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+            (a.min(v), b.max(v))
+        });
+    if !lo.is_finite() {
+        return (1.0, 10.0);
+    }
+    let nice = |v: f64, up: bool| {
+        let d = 10f64.powf(v.log10().floor());
+        let steps = [1.0, 2.0, 5.0, 10.0];
+        if up {
+            steps
+                .iter()
+                .map(|m| m * d)
+                .find(|x| *x >= v * (1.0 - 1e-12))
+                .unwrap_or(10.0 * d)
+        } else {
+            steps
+                .iter()
+                .rev()
+                .map(|m| m * d)
+                .find(|x| *x <= v * (1.0 + 1e-12))
+                .unwrap_or(d)
+        }
+    };
+    (nice(lo, false), nice(hi, true))
+}
+
+fn log_axis(lo: f64, hi: f64) -> LogAxis {
+    (lo..hi).log_scale().with_key_points(log_ticks(lo, hi))
+}
+
+/// A chart with log axes, labelled in the workspace's number format.
 fn log_log<'a, 'b>(
     area: &'a Area<'b>,
     caption: &str,
-    x: std::ops::Range<f64>,
-    y: std::ops::Range<f64>,
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
     x_desc: &str,
     y_desc: &str,
 ) -> Result<LogLog<'a, 'b>, Error> {
@@ -36,13 +106,36 @@ fn log_log<'a, 'b>(
         .margin(12)
         .x_label_area_size(45)
         .y_label_area_size(70)
-        .build_cartesian_2d(x.log_scale(), y.log_scale())?;
+        .build_cartesian_2d(log_axis(x0, x1), log_axis(y0, y1))?;
     chart
         .configure_mesh()
         .x_desc(x_desc)
         .y_desc(y_desc)
-        .x_label_formatter(&sci)
-        .y_label_formatter(&sci)
+        .x_label_formatter(&label)
+        .y_label_formatter(&label)
+        .draw()?;
+    Ok(chart)
+}
+
+/// A linear chart.
+fn linear<'a, 'b>(
+    area: &'a Area<'b>,
+    caption: &str,
+    x: std::ops::Range<f64>,
+    y: std::ops::Range<f64>,
+    x_desc: &str,
+    y_desc: &str,
+) -> Result<ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>, Error> {
+    let mut chart = ChartBuilder::on(area)
+        .caption(caption, FONT)
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(70)
+        .build_cartesian_2d(x, y)?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
         .draw()?;
     Ok(chart)
 }
@@ -61,27 +154,18 @@ fn legend<'a, 'b: 'a, CT: CoordTranslate>(
     Ok(())
 }
 
-/// Pairs `(x, y)` of two columns where both are numbers, optionally filtered by row.
-fn xy(t: &Table, x: &str, y: &str, keep: impl Fn(usize) -> bool) -> Vec<(f64, f64)> {
-    t.numbers(x)
-        .into_iter()
-        .zip(t.numbers(y))
-        .enumerate()
-        .filter_map(|(i, (a, b))| if keep(i) { Some((a?, b?)) } else { None })
-        .collect()
-}
-
-/// Tick labels of log axes: `1e-11`, `0.1`, `10`.
-fn sci(v: &f64) -> String {
+/// Tick labels: the workspace's number format, with `1e-11` instead of `1e-11` spelt out.
+fn label(v: &f64) -> String {
     let e = v.abs().log10();
-    if (-2.0..=3.0).contains(&e) {
-        format!("{v}")
+    if (-3.0..=4.0).contains(&e) {
+        let s = number(*v);
+        s.strip_suffix(".0").map_or(s.clone(), str::to_string)
     } else {
         format!("{v:.0e}")
     }
 }
 
-/// `(min, max)` of the points' coordinates, padded by 5 % of the span.
+/// `(min, max)` of values, padded by 5 % of the span.
 fn span(values: impl Iterator<Item = f64>) -> (f64, f64) {
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
         (a.min(v), b.max(v))
@@ -94,31 +178,24 @@ fn legend_line(c: RGBColor) -> impl Fn((i32, i32)) -> PathElement<(i32, i32)> {
     move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
 }
 
-fn number_in(t: &Table, key: &str) -> Option<f64> {
-    t.comments.iter().find_map(|c| {
-        let i = c.find(key)?;
-        let rest = &c[i + key.len()..];
-        let rest = rest.trim_start_matches([' ', '=']);
-        rest.split([' ', ',']).next()?.parse().ok()
-    })
+/// A triangle marker at `(x, y)` of colour `c`, as a one-element series.
+macro_rules! star {
+    ($x:expr, $y:expr, $c:expr) => {
+        std::iter::once(EmptyElement::at(($x, $y)) + TriangleMarker::new((0, 0), 8, $c.filled()))
+    };
 }
 
-/// Draws every figure into `dir` as `fig<N>.svg`.
-pub fn draw_all(figures: &[(usize, Vec<Table>)], dir: &Path) -> Result<(), Error> {
+/// Draws every figure into `dir` as `fig1.svg` ... `fig7.svg` and `fig_wall.svg`.
+pub fn draw_all(figs: &Figures, dir: &Path) -> Result<(), Error> {
     std::fs::create_dir_all(dir)?;
-    for (n, tables) in figures {
-        let path = dir.join(format!("fig{n}.svg"));
-        match n {
-            1 => fig1(&tables[0], &path)?,
-            2 => fig2(&tables[0], &path)?,
-            3 => fig3(&tables[0], &path)?,
-            4 => fig4(&tables[0], &path)?,
-            5 => fig5(&tables[0], &path)?,
-            6 => fig6(&tables[0], &tables[1], &path)?,
-            7 => fig7(&tables[0], &path)?,
-            _ => {}
-        }
-    }
+    figs.fig1.draw(&dir.join("fig1.svg"))?;
+    figs.fig2.draw(&dir.join("fig2.svg"))?;
+    figs.fig3.draw(&dir.join("fig3.svg"))?;
+    figs.fig4.draw(&dir.join("fig4.svg"))?;
+    figs.fig5.draw(&dir.join("fig5.svg"))?;
+    figs.fig6.draw(&dir.join("fig6.svg"))?;
+    figs.fig7.draw(&dir.join("fig7.svg"))?;
+    figs.wall.draw(&dir.join("fig_wall.svg"))?;
     Ok(())
 }
 
@@ -126,245 +203,251 @@ fn two_panels<'a>(root: &Area<'a>) -> (Area<'a>, Area<'a>) {
     root.split_horizontally(SIZE_TWO.0 / 2)
 }
 
-fn fig1(t: &Table, path: &Path) -> Result<(), Error> {
-    let root = SVGBackend::new(path, SIZE_TWO).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (left, right) = two_panels(&root);
-    let panel = t.texts("panel");
-    let ks = t.numbers("k");
-    let mut kvals: Vec<f64> = ks.iter().flatten().copied().collect();
-    kvals.dedup();
-    let mut chart = ChartBuilder::on(&left)
-        .caption("Figure 1: crack speed |v| (solid v > 0, thin v < 0)", FONT)
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d((1e-3f64..1e3).log_scale(), (1e-6f64..1e8).log_scale())?;
-    chart
-        .configure_mesh()
-        .x_desc("beta = G_eff / gamma (dimensionless)")
-        .y_desc("|v| (dimensionless)")
-        .x_label_formatter(&sci)
-        .y_label_formatter(&sci)
-        .draw()?;
-    for (j, k) in kvals.iter().enumerate() {
-        let c = COLOURS[j % COLOURS.len()];
-        let on = |i: usize| panel[i] == "full" && ks[i] == Some(*k);
-        let pts = xy(t, "beta", "v", on);
-        let closing: Vec<_> = pts.iter().filter(|p| p.1 > 0.0).copied().collect();
-        let opening: Vec<_> = pts
-            .iter()
-            .filter(|p| p.1 < 0.0)
-            .map(|p| (p.0, -p.1))
-            .collect();
-        chart
-            .draw_series(LineSeries::new(closing, c.stroke_width(2)))?
-            .label(format!("k = {k}"))
-            .legend(legend_line(c));
-        chart.draw_series(LineSeries::new(opening, c.stroke_width(1)))?;
-    }
-    legend(&mut chart, SeriesLabelPosition::MiddleRight)?;
-    let mut zoom = ChartBuilder::on(&right)
-        .caption("v near beta = 1", FONT)
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.95f64..1.05, {
-            let (lo, hi) = span(
-                xy(t, "beta", "v", |i| panel[i] == "zoom")
-                    .into_iter()
-                    .map(|p| p.1),
-            );
-            lo..hi
-        })?;
-    zoom.configure_mesh()
-        .x_desc("beta (dimensionless)")
-        .y_desc("v (dimensionless)")
-        .draw()?;
-    for (j, k) in kvals.iter().enumerate() {
-        let c = COLOURS[j % COLOURS.len()];
-        let pts = xy(t, "beta", "v", |i| panel[i] == "zoom" && ks[i] == Some(*k));
-        zoom.draw_series(LineSeries::new(pts, c.stroke_width(2)))?
-            .label(format!("k = {k}"))
-            .legend(legend_line(c));
-    }
-    legend(&mut zoom, SeriesLabelPosition::MiddleRight)?;
-    root.present()?;
-    Ok(())
-}
-
-fn fig2(t: &Table, path: &Path) -> Result<(), Error> {
-    let root = SVGBackend::new(path, SIZE_TWO).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (left, right) = two_panels(&root);
-    let v_in = t.numbers("v_in");
-    let mut cases: Vec<f64> = v_in.iter().flatten().copied().collect();
-    cases.dedup();
-    let outcomes = t.texts("outcome");
-    let a_eq = number_in(t, "a_eq").unwrap_or(f64::NAN);
-    let d_eq = number_in(t, "delta_eq").unwrap_or(f64::NAN);
-    let colour = |o: &str| match o {
-        "sticking" => GREY,
-        "double" => COLOURS[0],
-        _ => COLOURS[1],
-    };
-    let scale = |p: Vec<(f64, f64)>, sx: f64, sy: f64| -> Vec<(f64, f64)> {
-        p.into_iter().map(|(x, y)| (x * sx, y * sy)).collect()
-    };
-    let (d0, d1) = span(t.numbers("delta").into_iter().flatten().map(|d| d * 1e9));
-    let (_, a1) = span(t.numbers("a").into_iter().flatten().map(|a| a * 1e6));
-    let (v0, v1) = span(
-        t.numbers("delta_dot")
-            .into_iter()
-            .flatten()
-            .map(|v| v * 100.0),
-    );
-    let mut da = ChartBuilder::on(&left)
-        .caption("Figure 2: delta-a plane (star: JKR equilibrium)", FONT)
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(d0..d1, 0f64..a1)?;
-    da.configure_mesh()
-        .x_desc("mutual approach delta (nm)")
-        .y_desc("contact radius a (um)")
-        .draw()?;
-    let mut dv = ChartBuilder::on(&right)
-        .caption("delta-delta_dot plane", FONT)
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(70)
-        .build_cartesian_2d(d0..d1, v0..v1)?;
-    dv.configure_mesh()
-        .x_desc("mutual approach delta (nm)")
-        .y_desc("approach speed delta_dot (cm/s)")
-        .draw()?;
-    for v in &cases {
-        let idx: Vec<usize> = (0..v_in.len()).filter(|&i| v_in[i] == Some(*v)).collect();
-        let o = idx.first().map_or("", |&i| outcomes[i].as_str());
-        let c = colour(o);
-        let on = |i: usize| v_in[i] == Some(*v);
-        let label = format!("V_in = {:.2} cm/s ({o})", v * 100.0);
-        da.draw_series(LineSeries::new(
-            scale(xy(t, "delta", "a", on), 1e9, 1e6),
-            c.stroke_width(2),
-        ))?
-        .label(label.clone())
-        .legend(legend_line(c));
-        dv.draw_series(LineSeries::new(
-            scale(xy(t, "delta", "delta_dot", on), 1e9, 100.0),
-            c.stroke_width(2),
-        ))?
-        .label(label)
-        .legend(legend_line(c));
-    }
-    let star = |x: f64, y: f64| {
-        EmptyElement::at((x, y)) + TriangleMarker::new((0, 0), 8, COLOURS[2].filled())
-    };
-    da.draw_series(std::iter::once(star(d_eq * 1e9, a_eq * 1e6)))?;
-    dv.draw_series(std::iter::once(star(d_eq * 1e9, 0.0)))?;
-    legend(&mut da, SeriesLabelPosition::LowerRight)?;
-    legend(&mut dv, SeriesLabelPosition::LowerRight)?;
-    root.present()?;
-    Ok(())
-}
-
-fn fig3(t: &Table, path: &Path) -> Result<(), Error> {
-    let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
-    root.fill(&WHITE)?;
-    let outcome = t.texts("outcome");
-    let vs = number_in(t, "v_stick").unwrap_or(f64::NAN);
-    let mut chart = ChartBuilder::on(&root)
-        .caption("Figure 3: CO2, R1 = 60 um, T_vis = 1e-9 s", FONT)
-        .margin(12)
-        .x_label_area_size(45)
-        .y_label_area_size(60)
-        .build_cartesian_2d(2f64..10.0, -0.3f64..1.0)?;
-    chart
-        .configure_mesh()
-        .x_desc("impact speed V_in (cm/s)")
-        .y_desc("coefficient of restitution e")
-        .draw()?;
-    let cm = |p: Vec<(f64, f64)>| -> Vec<(f64, f64)> {
-        p.into_iter().map(|(x, y)| (100.0 * x, y)).collect()
-    };
-    for (name, c) in [
-        ("sticking", GREY),
-        ("double", COLOURS[0]),
-        ("bouncing", COLOURS[1]),
-    ] {
-        let pts = cm(xy(t, "v_in", "e", |i| outcome[i] == name));
-        chart
-            .draw_series(LineSeries::new(pts, c.stroke_width(2)))?
-            .label(format!("{name} (observed e)"))
-            .legend(legend_line(c));
-    }
-    let computed = cm(xy(t, "v_in", "e_computed", |i| outcome[i] == "double"));
-    chart
-        .draw_series(
-            computed
+impl Figure1 {
+    /// `fig1.svg`: |v| against beta for each k, and v near beta = 1.
+    pub fn draw(&self, path: &Path) -> Result<(), Error> {
+        let root = SVGBackend::new(path, SIZE_TWO).into_drawing_area();
+        root.fill(&WHITE)?;
+        let (left, right) = two_panels(&root);
+        let mut chart = log_log(
+            &left,
+            "Figure 1: crack speed |v| (solid v > 0, thin v < 0)",
+            (1e-3, 1e3),
+            (1e-6, 1e8),
+            "beta = G_eff / gamma (dimensionless)",
+            "|v| (dimensionless)",
+        )?;
+        for (j, c) in self.curves.iter().enumerate() {
+            let col = COLOURS[j % COLOURS.len()];
+            let closing: Vec<_> = c.full.iter().filter(|p| p.1 > 0.0).copied().collect();
+            let opening: Vec<_> = c
+                .full
                 .iter()
-                .map(|&p| Circle::new(p, 2, COLOURS[0].filled())),
-        )?
-        .label("double: computed e = -V_out/V_in")
-        .legend(|(x, y)| Circle::new((x + 10, y), 3, COLOURS[0].filled()));
-    chart
-        .draw_series(std::iter::once(Circle::new(
-            (100.0 * vs, 0.0),
-            6,
-            GREY.filled(),
-        )))?
-        .label(format!("V_stick = {:.3} cm/s", 100.0 * vs))
-        .legend(|(x, y)| Circle::new((x + 10, y), 5, GREY.filled()));
-    legend(&mut chart, SeriesLabelPosition::LowerRight)?;
-    root.present()?;
-    Ok(())
+                .filter(|p| p.1 < 0.0)
+                .map(|p| (p.0, -p.1))
+                .collect();
+            chart
+                .draw_series(LineSeries::new(closing, col.stroke_width(2)))?
+                .label(format!("k = {}", number(c.k)))
+                .legend(legend_line(col));
+            chart.draw_series(LineSeries::new(opening, col.stroke_width(1)))?;
+        }
+        legend(&mut chart, SeriesLabelPosition::MiddleRight)?;
+        let (lo, hi) = span(self.curves.iter().flat_map(|c| c.zoom.iter().map(|p| p.1)));
+        let mut zoom = linear(
+            &right,
+            "v near beta = 1",
+            0.95..1.05,
+            lo..hi,
+            "beta (dimensionless)",
+            "v (dimensionless)",
+        )?;
+        for (j, c) in self.curves.iter().enumerate() {
+            let col = COLOURS[j % COLOURS.len()];
+            zoom.draw_series(LineSeries::new(c.zoom.clone(), col.stroke_width(2)))?
+                .label(format!("k = {}", number(c.k)))
+                .legend(legend_line(col));
+        }
+        legend(&mut zoom, SeriesLabelPosition::MiddleRight)?;
+        root.present()?;
+        Ok(())
+    }
 }
 
-fn fig4(t: &Table, path: &Path) -> Result<(), Error> {
+fn outcome_colour(o: Outcome) -> RGBColor {
+    match o {
+        Outcome::Sticking => GREY,
+        Outcome::DoubleCollision => COLOURS[0],
+        Outcome::Bouncing => COLOURS[1],
+    }
+}
+
+impl Figure2 {
+    /// `fig2.svg`: the trajectories in the delta-a and delta-delta_dot planes.
+    pub fn draw(&self, path: &Path) -> Result<(), Error> {
+        let root = SVGBackend::new(path, SIZE_TWO).into_drawing_area();
+        root.fill(&WHITE)?;
+        let (left, right) = two_panels(&root);
+        let points = || self.runs.iter().flat_map(|r| r.points.iter());
+        // plotted in nm, um and cm/s
+        let (d0, d1) = span(points().map(|p| p.delta * 1e9));
+        let (_, a1) = span(points().map(|p| p.a * 1e6));
+        let (v0, v1) = span(points().map(|p| p.delta_dot * 100.0));
+        let mut da = linear(
+            &left,
+            "Figure 2: delta-a plane (star: JKR equilibrium)",
+            d0..d1,
+            0.0..a1,
+            "mutual approach delta (nm)",
+            "contact radius a (um)",
+        )?;
+        let mut dv = linear(
+            &right,
+            "delta-delta_dot plane",
+            d0..d1,
+            v0..v1,
+            "mutual approach delta (nm)",
+            "approach speed delta_dot (cm/s)",
+        )?;
+        for run in &self.runs {
+            let c = outcome_colour(run.outcome);
+            let label = format!(
+                "V_in = {} cm/s ({})",
+                number(run.v_in * 100.0),
+                run.outcome.as_str()
+            );
+            let xy = |f: &dyn Fn(&dynamics::TrajectoryPoint) -> f64| -> Vec<(f64, f64)> {
+                run.points.iter().map(|p| (p.delta * 1e9, f(p))).collect()
+            };
+            da.draw_series(LineSeries::new(xy(&|p| p.a * 1e6), c.stroke_width(2)))?
+                .label(label.clone())
+                .legend(legend_line(c));
+            dv.draw_series(LineSeries::new(
+                xy(&|p| p.delta_dot * 100.0),
+                c.stroke_width(2),
+            ))?
+            .label(label)
+            .legend(legend_line(c));
+        }
+        let (a_eq, d_eq) = (self.contact.a_eq(), self.contact.delta_eq());
+        da.draw_series(star!(d_eq * 1e9, a_eq * 1e6, COLOURS[2]))?;
+        dv.draw_series(star!(d_eq * 1e9, 0.0, COLOURS[2]))?;
+        legend(&mut da, SeriesLabelPosition::LowerRight)?;
+        legend(&mut dv, SeriesLabelPosition::LowerRight)?;
+        root.present()?;
+        Ok(())
+    }
+}
+
+impl Figure3 {
+    /// `fig3.svg`: e against V_in, observed and computed.
+    pub fn draw(&self, path: &Path) -> Result<(), Error> {
+        let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
+        root.fill(&WHITE)?;
+        let (_, vs) = self.transitions();
+        let mut chart = linear(
+            &root,
+            "Figure 3: CO2, R1 = 60 um, T_vis = 1e-9 s",
+            2.0..10.0,
+            -0.3..1.0,
+            "impact speed V_in (cm/s)",
+            "coefficient of restitution e",
+        )?;
+        for o in [
+            Outcome::Sticking,
+            Outcome::DoubleCollision,
+            Outcome::Bouncing,
+        ] {
+            let c = outcome_colour(o);
+            let pts: Vec<_> = self
+                .points
+                .iter()
+                .filter(|p| p.outcome == o)
+                .map(|p| (100.0 * p.v_in, p.e_observed()))
+                .collect();
+            chart
+                .draw_series(LineSeries::new(pts, c.stroke_width(2)))?
+                .label(format!("{} (observed e)", o.as_str()))
+                .legend(legend_line(c));
+        }
+        let computed = self
+            .points
+            .iter()
+            .filter(|p| p.outcome == Outcome::DoubleCollision)
+            .map(|p| Circle::new((100.0 * p.v_in, p.e_computed), 2, COLOURS[0].filled()));
+        chart
+            .draw_series(computed)?
+            .label("double: computed e = -V_out/V_in")
+            .legend(|(x, y)| Circle::new((x + 10, y), 3, COLOURS[0].filled()));
+        chart
+            .draw_series(std::iter::once(Circle::new(
+                (100.0 * vs, 0.0),
+                6,
+                GREY.filled(),
+            )))?
+            .label(format!("V_stick = {:.3} cm/s", 100.0 * vs))
+            .legend(|(x, y)| Circle::new((x + 10, y), 5, GREY.filled()));
+        legend(&mut chart, SeriesLabelPosition::LowerRight)?;
+        root.present()?;
+        Ok(())
+    }
+}
+
+/// V_stick against T_vis: one line per curve, the experimental band and the JKR stars.
+fn v_stick_chart(
+    path: &Path,
+    caption: &str,
+    curves: &[(String, &ThresholdCurve)],
+    (x0, x1): (f64, f64),
+    band: Option<(f64, f64)>,
+    line_at: f64,
+    experiment: &str,
+) -> Result<(), Error> {
     let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
     root.fill(&WHITE)?;
-    let ks = t.numbers("k");
-    let mut kvals: Vec<f64> = ks.iter().flatten().copied().collect();
-    kvals.dedup();
-    kvals.sort_by(f64::total_cmp);
-    kvals.dedup();
-    let (x0, x1) = (1e-12f64, 1e-8f64);
+    let values = curves
+        .iter()
+        .flat_map(|(_, c)| c.v_stick().into_iter().map(|p| p.1).chain([c.v_stick_jkr]))
+        .chain([line_at])
+        .chain(band.map_or(vec![], |(a, b)| vec![a, b]));
+    let y = log_range(values);
     let mut chart = log_log(
         &root,
-        "Figure 4: CO2, R1 = 60 um",
-        x0..x1,
-        1e-2..0.3,
+        caption,
+        (x0, x1),
+        y,
         "relaxation time T_vis (s)",
         "threshold velocity for sticking V_stick (m/s)",
     )?;
-    chart
-        .draw_series(std::iter::once(Rectangle::new(
-            [(x0, 0.02), (x1, 0.06)],
-            BAND.mix(0.5).filled(),
-        )))?
-        .label("experiment 0.04 +- 0.02 m/s")
-        .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], BAND.filled()));
-    chart.draw_series(LineSeries::new(
-        [(x0, 0.04), (x1, 0.04)],
-        BLACK.stroke_width(1),
-    ))?;
-    for (j, k) in kvals.iter().enumerate() {
-        let c = COLOURS[j % COLOURS.len()];
+    if let Some((lo, hi)) = band {
         chart
-            .draw_series(LineSeries::new(
-                xy(t, "t_vis", "v_stick", |i| ks[i] == Some(*k)),
-                c.stroke_width(2),
-            ))?
-            .label(format!("k = {k}"))
-            .legend(legend_line(c));
+            .draw_series(std::iter::once(Rectangle::new(
+                [(x0, lo), (x1, hi)],
+                BAND.mix(0.5).filled(),
+            )))?
+            .label("experimental range")
+            .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], BAND.filled()));
     }
-    if let Some(Some(vj)) = t.numbers("v_stick_jkr").first() {
+    chart
+        .draw_series(LineSeries::new(
+            [(x0, line_at), (x1, line_at)],
+            BLACK.stroke_width(1),
+        ))?
+        .label(experiment.to_string())
+        .legend(legend_line(BLACK));
+    for (j, (name, c)) in curves.iter().enumerate() {
+        let col = COLOURS[j % COLOURS.len()];
+        let pts = c.v_stick();
+        let end = pts.last().copied();
         chart
-            .draw_series(std::iter::once(
-                EmptyElement::at((x0 * 1.15, *vj)) + TriangleMarker::new((0, 0), 9, BLACK.filled()),
-            ))?
-            .label(format!("V_stick,JKR = {:.3e} m/s", vj))
+            .draw_series(LineSeries::new(pts, col.stroke_width(2)))?
+            .label(name.clone())
+            .legend(legend_line(col));
+        // where no collision bounces any more the curve ends: mark its last point
+        if c.points.last().is_some_and(|p| p.v_stick.is_none()) {
+            if let Some(p) = end {
+                chart.draw_series(std::iter::once(Cross::new(p, 6, col.stroke_width(2))))?;
+            }
+        }
+    }
+    // one star per distinct V_stick,JKR, named after its curve when they differ
+    let mut jkr: Vec<(f64, &str)> = curves
+        .iter()
+        .map(|(n, c)| (c.v_stick_jkr, n.as_str()))
+        .collect();
+    jkr.dedup_by(|a, b| a.0 == b.0);
+    for &(v, name) in &jkr {
+        let whose = if jkr.len() > 1 {
+            format!(" ({name})")
+        } else {
+            String::new()
+        };
+        chart
+            .draw_series(star!(x0 * 1.15, v, BLACK))?
+            .label(format!(
+                "V_stick,JKR = {} m/s{whose}",
+                number(round_to(v, 3))
+            ))
             .legend(|(x, y)| TriangleMarker::new((x + 10, y), 6, BLACK.filled()));
     }
     legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
@@ -372,167 +455,241 @@ fn fig4(t: &Table, path: &Path) -> Result<(), Error> {
     Ok(())
 }
 
-fn fig5(t: &Table, path: &Path) -> Result<(), Error> {
-    let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
-    root.fill(&WHITE)?;
-    let gs = t.numbers("gamma_sv");
-    let mut gvals: Vec<f64> = gs.iter().flatten().copied().collect();
-    gvals.sort_by(f64::total_cmp);
-    gvals.dedup();
-    let (x0, x1) = (1e-12f64, 1e-7f64);
-    let mut chart = log_log(
-        &root,
-        "Figure 5: H2O, R1 = 90 um (curves end where no collision bounces)",
-        x0..x1,
-        1e-3..10.0,
-        "relaxation time T_vis (s)",
-        "threshold velocity for sticking V_stick (m/s)",
-    )?;
-    chart
-        .draw_series(LineSeries::new(
-            [(x0, 0.73), (x1, 0.73)],
-            BLACK.stroke_width(1),
-        ))?
-        .label("experiment 0.73 m/s")
-        .legend(legend_line(BLACK));
-    for (j, g) in gvals.iter().enumerate() {
-        let c = COLOURS[j % COLOURS.len()];
-        let pts = xy(t, "t_vis", "v_stick", |i| gs[i] == Some(*g));
-        let end = pts.last().copied();
-        chart
-            .draw_series(LineSeries::new(pts, c.stroke_width(2)))?
-            .label(format!("gamma_SV = {g} J/m^2"))
-            .legend(legend_line(c));
-        if let Some(p) = end {
-            chart.draw_series(std::iter::once(Cross::new(p, 6, c.stroke_width(2))))?;
-        }
-    }
-    legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
-    root.present()?;
-    Ok(())
+/// `v` rounded to `digits` significant figures, for legends.
+fn round_to(v: f64, digits: i32) -> f64 {
+    let scale = 10f64.powi(digits - 1 - v.abs().log10().floor() as i32);
+    (v * scale).round() / scale
 }
 
-fn fig6(points: &Table, laws: &Table, path: &Path) -> Result<(), Error> {
-    let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
-    root.fill(&WHITE)?;
-    let mut chart = log_log(
-        &root,
-        "Figure 6: relaxation time against particle radius",
-        0.1..1000.0,
-        1e-13..1e-6,
-        "particle radius R1 (um)",
-        "relaxation time T_vis (s)",
-    )?;
-    for (name, col, c) in [
-        ("CO2 law", "t_vis_co2", COLOURS[0]),
-        ("H2O law", "t_vis_h2o", COLOURS[1]),
-    ] {
-        let pts: Vec<_> = xy(laws, "r1", col, |_| true)
-            .into_iter()
-            .map(|(r, t)| (r * 1e6, t))
+impl Figure4 {
+    /// `fig4.svg`: V_stick against T_vis for each k, with the CO2 experiment.
+    pub fn draw(&self, path: &Path) -> Result<(), Error> {
+        let e = CO2_EXPERIMENT;
+        let curves: Vec<_> = self
+            .curves
+            .iter()
+            .map(|c| (format!("k = {}", number(c.parameter)), c))
             .collect();
-        chart
-            .draw_series(LineSeries::new(pts, c.stroke_width(1)))?
-            .label(format!("{name} (T_vis ∝ R1^1.11)"))
-            .legend(legend_line(c));
+        v_stick_chart(
+            path,
+            "Figure 4: CO2, R1 = 60 um",
+            &curves,
+            (1e-12, 1e-8),
+            Some((e.v_stick - e.err, e.v_stick + e.err)),
+            e.v_stick,
+            &format!("experiment {} +- {} m/s", number(e.v_stick), number(e.err)),
+        )
     }
-    let src = points.texts("source");
-    let (r1, t, lo, hi) = (
-        points.numbers("r1"),
-        points.numbers("t_vis"),
-        points.numbers("t_vis_min"),
-        points.numbers("t_vis_max"),
-    );
-    for i in 0..src.len() {
-        let (Some(r), Some(tv), Some(l), Some(h)) = (r1[i], t[i], lo[i], hi[i]) else {
-            continue;
-        };
-        let x = r * 1e6;
-        let (c, label) = match src[i].as_str() {
-            "co2" => (COLOURS[0], "CO2 fit (this work)"),
-            "h2o" => (COLOURS[1], "H2O fit (this work)"),
-            _ => (COLOURS[1], "Gundlach et al. 2015"),
-        };
-        if src[i] == "gundlach2015" {
-            chart
-                .draw_series(std::iter::once(
-                    EmptyElement::at((x, tv)) + TriangleMarker::new((0, 0), 9, c.filled()),
-                ))?
-                .label(label)
-                .legend(move |(x, y)| TriangleMarker::new((x + 10, y), 6, c.filled()));
-        } else {
-            chart
-                .draw_series(std::iter::once(ErrorBar::new_vertical(
-                    x,
-                    l.max(1e-13),
-                    tv,
-                    h,
-                    c.filled(),
-                    10,
-                )))?
-                .label(label)
-                .legend(move |(x, y)| Circle::new((x + 10, y), 4, c.filled()));
-        }
-    }
-    legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
-    root.present()?;
-    Ok(())
 }
 
-fn fig7(t: &Table, path: &Path) -> Result<(), Error> {
-    let root = SVGBackend::new(path, SIZE_TWO).into_drawing_area();
-    root.fill(&WHITE)?;
-    let (left, right) = two_panels(&root);
-    let um = |p: Vec<(f64, f64)>| -> Vec<(f64, f64)> {
-        p.into_iter().map(|(x, y)| (x * 1e6, y)).collect()
-    };
-    let series = [
-        ("T_vis = T_vis,CO2 (standard)", "co2", COLOURS[0]),
-        ("T_vis = T_vis,H2O", "h2o", COLOURS[1]),
-        ("JKR (T_vis = 0)", "jkr", GREY),
-    ];
-    for (area, what, ylab, yr) in [
-        (
-            &left,
-            "v_stick",
-            "threshold velocity for sticking V_stick (m/s)",
-            1e-3f64..100.0,
-        ),
-        (
-            &right,
-            "v_frag",
-            "fragmentation velocity V_frag = 10 V_stick (m/s)",
-            1e-2f64..1000.0,
-        ),
-    ] {
+impl Figure5 {
+    /// `fig5.svg`: V_stick against T_vis for each gamma_SV, with the H2O experiment.
+    pub fn draw(&self, path: &Path) -> Result<(), Error> {
+        let curves: Vec<_> = self
+            .curves
+            .iter()
+            .map(|c| (format!("gamma_SV = {} J/m^2", number(c.parameter)), c))
+            .collect();
+        v_stick_chart(
+            path,
+            "Figure 5: H2O, R1 = 90 um (x: no bouncing beyond)",
+            &curves,
+            (1e-12, 1e-7),
+            None,
+            H2O_EXPERIMENT.v_stick,
+            &format!("experiment {} m/s", number(H2O_EXPERIMENT.v_stick)),
+        )
+    }
+}
+
+impl Figure6 {
+    /// `fig6.svg`: fitted T_vis with their ranges, and the size laws.
+    pub fn draw(&self, path: &Path) -> Result<(), Error> {
+        let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
+        root.fill(&WHITE)?;
+        let y = log_range(
+            self.laws
+                .iter()
+                .flat_map(|l| [l.1, l.2])
+                .chain(self.fits.iter().flat_map(|f| [f.t_vis_min, f.t_vis_max])),
+        );
         let mut chart = log_log(
-            area,
-            &format!("Figure 7: CO2 monomers, {what}"),
-            0.1..100.0,
-            yr,
-            "monomer radius R1 (um)",
-            ylab,
+            &root,
+            "Figure 6: relaxation time against particle radius",
+            (0.1, 1000.0),
+            y,
+            "particle radius R1 (um)",
+            "relaxation time T_vis (s)",
         )?;
-        if what == "v_frag" {
+        for (name, c, pick) in [("CO2 law", COLOURS[0], 0usize), ("H2O law", COLOURS[1], 1)] {
+            let pts: Vec<_> = self
+                .laws
+                .iter()
+                .map(|l| (l.0 * 1e6, if pick == 0 { l.1 } else { l.2 }))
+                .collect();
             chart
-                .draw_series(std::iter::once(Rectangle::new(
-                    [(0.1, 25.0), (100.0, 50.0)],
-                    COLOURS[0].mix(0.15).filled(),
-                )))?
-                .label("maximum collision velocity 25-50 m/s")
-                .legend(|(x, y)| {
-                    Rectangle::new([(x, y - 5), (x + 20, y + 5)], COLOURS[0].mix(0.3).filled())
-                });
-        }
-        for (label, suffix, c) in series {
-            let pts = um(xy(t, "r1", &format!("{what}_{suffix}"), |_| true));
-            chart
-                .draw_series(LineSeries::new(pts, c.stroke_width(2)))?
-                .label(label)
+                .draw_series(LineSeries::new(pts, c.stroke_width(1)))?
+                .label(format!("{name} (T_vis ∝ R1^1.11)"))
                 .legend(legend_line(c));
         }
-        legend(&mut chart, SeriesLabelPosition::UpperRight)?;
+        for f in &self.fits {
+            let x = f.r1 * 1e6;
+            let (c, label) = match f.source {
+                "co2" => (COLOURS[0], "CO2 fit (this work)"),
+                "h2o" => (COLOURS[1], "H2O fit (this work)"),
+                _ => (COLOURS[1], "Gundlach et al. 2015"),
+            };
+            if f.source == "gundlach2015" {
+                chart
+                    .draw_series(star!(x, f.t_vis, c))?
+                    .label(label)
+                    .legend(move |(x, y)| TriangleMarker::new((x + 10, y), 6, c.filled()));
+            } else {
+                chart
+                    .draw_series(std::iter::once(ErrorBar::new_vertical(
+                        x,
+                        f.t_vis_min.max(y.0),
+                        f.t_vis,
+                        f.t_vis_max,
+                        c.filled(),
+                        10,
+                    )))?
+                    .label(label)
+                    .legend(move |(x, y)| Circle::new((x + 10, y), 4, c.filled()));
+            }
+        }
+        legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
+        root.present()?;
+        Ok(())
     }
-    root.present()?;
-    Ok(())
+}
+
+impl Figure7 {
+    /// `fig7.svg`: V_stick and V_frag against the monomer radius.
+    pub fn draw(&self, path: &Path) -> Result<(), Error> {
+        let root = SVGBackend::new(path, SIZE_TWO).into_drawing_area();
+        root.fill(&WHITE)?;
+        let (left, right) = two_panels(&root);
+        type Pick = fn(&crate::figures::SizePoint) -> Option<f64>;
+        let series: [(&str, RGBColor, Pick); 3] = [
+            ("T_vis = T_vis,CO2 (standard)", COLOURS[0], |p| {
+                p.co2.v_stick
+            }),
+            ("T_vis = T_vis,H2O", COLOURS[1], |p| p.h2o.v_stick),
+            ("JKR (T_vis = 0)", GREY, |p| Some(p.co2.v_stick_jkr)),
+        ];
+        for (area, factor, what, ylab) in [
+            (
+                &left,
+                1.0,
+                "V_stick",
+                "threshold velocity for sticking V_stick (m/s)",
+            ),
+            (
+                &right,
+                thresholds::V_FRAG_FACTOR,
+                "V_frag",
+                "fragmentation velocity V_frag = 10 V_stick (m/s)",
+            ),
+        ] {
+            let mut values: Vec<f64> = self
+                .points
+                .iter()
+                .flat_map(|p| series.iter().filter_map(|s| (s.2)(p)))
+                .map(|v| v * factor)
+                .collect();
+            if what == "V_frag" {
+                values.extend([V_COL_MAX.0, V_COL_MAX.1]);
+            }
+            let y = log_range(values.into_iter());
+            let mut chart = log_log(
+                area,
+                &format!("Figure 7: CO2 monomers, {what}"),
+                (0.1, 100.0),
+                y,
+                "monomer radius R1 (um)",
+                ylab,
+            )?;
+            if what == "V_frag" {
+                chart
+                    .draw_series(std::iter::once(Rectangle::new(
+                        [(0.1, V_COL_MAX.0), (100.0, V_COL_MAX.1)],
+                        COLOURS[0].mix(0.15).filled(),
+                    )))?
+                    .label(format!(
+                        "maximum collision velocity {} - {} m/s",
+                        number(V_COL_MAX.0),
+                        number(V_COL_MAX.1)
+                    ))
+                    .legend(|(x, y)| {
+                        Rectangle::new([(x, y - 5), (x + 20, y + 5)], COLOURS[0].mix(0.3).filled())
+                    });
+            }
+            for (label, c, pick) in series {
+                let pts: Vec<_> = self
+                    .points
+                    .iter()
+                    .filter_map(|p| Some((p.r1 * 1e6, pick(p)? * factor)))
+                    .collect();
+                chart
+                    .draw_series(LineSeries::new(pts, c.stroke_width(2)))?
+                    .label(label)
+                    .legend(legend_line(c));
+            }
+            legend(&mut chart, SeriesLabelPosition::UpperRight)?;
+        }
+        root.present()?;
+        Ok(())
+    }
+}
+
+impl FigureWall {
+    /// `fig_wall.svg`: V_stick against T_vis for identical spheres and a sphere on a wall.
+    pub fn draw(&self, path: &Path) -> Result<(), Error> {
+        let e = CO2_EXPERIMENT;
+        let curves: Vec<_> = WALL_GEOMETRIES
+            .iter()
+            .zip(&self.curves)
+            .map(|(name, c)| {
+                let label = if *name == "wall" {
+                    "a 60 um sphere on a wall"
+                } else {
+                    "two identical spheres of 60 um"
+                };
+                (label.to_string(), c)
+            })
+            .collect();
+        v_stick_chart(
+            path,
+            "Sphere on a wall: CO2, R1 = 60 um, k = 0.01",
+            &curves,
+            (1e-12, 1e-8),
+            Some((e.v_stick - e.err, e.v_stick + e.err)),
+            e.v_stick,
+            &format!("experiment {} +- {} m/s", number(e.v_stick), number(e.err)),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// An axis over less than two decades gets 1, 2 and 5 of each decade (Figure 4's y axis,
+    /// 0.01 to 0.2 m/s); wider axes only the decades.
+    #[test]
+    fn ticks() {
+        assert_eq!(log_ticks(0.01, 0.2), vec![0.01, 0.02, 0.05, 0.1, 0.2]);
+        assert_eq!(log_ticks(1e-12, 1e-8).len(), 5);
+        assert_eq!(log_ticks(0.01, 1.0).len(), 7);
+    }
+
+    /// Ranges hold the data with no empty decade: Figure 7's V_stick from 2e-3 to 30 m/s.
+    #[test]
+    fn ranges_fit_the_data() {
+        let (lo, hi) = log_range([0.0023, 31.0].into_iter());
+        assert_eq!((lo, hi), (0.002, 50.0));
+        let (lo, hi) = log_range([0.0166, 0.06].into_iter());
+        assert_eq!((lo, hi), (0.01, 0.1));
+    }
 }

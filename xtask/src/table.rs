@@ -137,39 +137,6 @@ impl Table {
         })
     }
 
-    /// Index of a column.
-    pub fn index(&self, name: &str) -> Option<usize> {
-        self.columns.iter().position(|c| c == name)
-    }
-
-    /// A numeric column (`None` for missing or text cells).
-    pub fn numbers(&self, name: &str) -> Vec<Option<f64>> {
-        let Some(i) = self.index(name) else {
-            return Vec::new();
-        };
-        self.rows
-            .iter()
-            .map(|r| match &r[i] {
-                Cell::Num(v) => Some(*v),
-                _ => None,
-            })
-            .collect()
-    }
-
-    /// A text column (empty strings for numbers and missing cells).
-    pub fn texts(&self, name: &str) -> Vec<String> {
-        let Some(i) = self.index(name) else {
-            return Vec::new();
-        };
-        self.rows
-            .iter()
-            .map(|r| match &r[i] {
-                Cell::Text(t) => t.clone(),
-                _ => String::new(),
-            })
-            .collect()
-    }
-
     /// Compares with `expected`: same columns and rows, texts and missing cells equal, numbers
     /// within `rel_tol` relative to the larger of the two magnitudes, except in the columns of
     /// [`SCALED_COLUMNS`] (trajectories and restitution coefficients, which cross zero and whose
