@@ -8,6 +8,7 @@
 pub mod figures;
 pub mod plot;
 pub mod table;
+pub mod test;
 
 /// Significant figures written to the CSV files.
 pub const CSV_DIGITS: usize = 10;

@@ -1,12 +1,13 @@
 //! `cargo xtask figures [--check]`: regenerate (or check) the paper's figures.
+//! `cargo xtask test`: every test, Rust and Python.
 
 use clap::{Parser, Subcommand};
+use greenwood::format::number;
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 use std::sync::Mutex;
 use std::time::Instant;
 use xtask::figures::{self, Figures, Resolution};
-use greenwood::format::number;
 use xtask::{compare_with_committed, plot, workspace_root, CHECK_REL_TOL, CSV_DIGITS};
 
 /// Project automation for the stickiness workspace.
@@ -27,12 +28,32 @@ enum Command {
         #[arg(long)]
         check: bool,
     },
+    /// Run every test: `cargo test --workspace`, then the Python package in a virtual
+    /// environment under target/venv (built from crates/python) with pytest.
+    Test {
+        /// Only the Rust tests.
+        #[arg(long, conflicts_with = "python_only")]
+        rust_only: bool,
+        /// Only the Python package and its tests.
+        #[arg(long)]
+        python_only: bool,
+    },
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Figures { check } => run_figures(check),
+        Command::Test {
+            rust_only,
+            python_only,
+        } => xtask::test::run_tests(
+            &workspace_root(),
+            xtask::test::Parts {
+                rust: !python_only,
+                python: !rust_only,
+            },
+        ),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,0 +1,127 @@
+//! `cargo xtask test`: every test of the project, Rust and Python, in one command on a fresh
+//! machine.
+//!
+//! 1. `cargo test --workspace` (which also builds the `stickiness` binary);
+//! 2. a virtual environment under `target/venv` with the Python test dependencies;
+//! 3. the package built from `crates/python` (`pip install ./crates/python`, maturin on the
+//!    workspace's opt-level-3 dev profile, so it reuses the build of step 1);
+//! 4. `pytest crates/python/tests`, with `STICKINESS_CLI` pointing at the binary of step 1.
+//!
+//! It installs what it needs itself and fails loudly on anything missing; it never skips.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// Any failure of the test run.
+pub type Error = Box<dyn std::error::Error + Send + Sync>;
+
+/// Python packages the tests need (beyond the package itself and its dependency numpy).
+pub const PYTHON_TEST_REQUIREMENTS: &[&str] = &[
+    "maturin>=1.9.4,<2",
+    "numpy>=1.22",
+    "pytest>=7",
+    "pandas>=1.5",
+    "matplotlib>=3.5",
+    "mypy>=1.10",
+];
+
+/// Which parts to run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Parts {
+    /// `cargo test --workspace`.
+    pub rust: bool,
+    /// The Python package and its tests.
+    pub python: bool,
+}
+
+/// Runs `cmd`, echoing it; an error naming it when it fails.
+fn run(cmd: &mut Command) -> Result<(), Error> {
+    eprintln!("+ {}", shown(cmd));
+    let status = cmd
+        .status()
+        .map_err(|e| format!("cannot run `{}`: {e}", shown(cmd)))?;
+    if status.success() {
+        Ok(())
+    } else {
+        Err(format!("`{}` failed ({status})", shown(cmd)).into())
+    }
+}
+
+fn shown(cmd: &Command) -> String {
+    std::iter::once(cmd.get_program())
+        .chain(cmd.get_args())
+        .map(|s| s.to_string_lossy().into_owned())
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The Python interpreter to build the environment with: `$PYTHON`, else `python3`.
+fn system_python() -> String {
+    std::env::var("PYTHON").unwrap_or_else(|_| "python3".into())
+}
+
+/// Creates (once) the virtual environment at `venv` and returns its interpreter.
+fn virtual_env(venv: &Path) -> Result<PathBuf, Error> {
+    let python = venv.join("bin").join("python");
+    if !python.is_file() {
+        run(Command::new(system_python()).args(["-m", "venv"]).arg(venv)).map_err(|e| {
+            format!("{e}\nthe Python tests need CPython >= 3.9 with the venv module (Debian: apt-get install python3-venv)")
+        })?;
+    }
+    Ok(python)
+}
+
+/// Runs the requested parts from the workspace `root`.
+pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    if parts.rust {
+        run(Command::new(&cargo)
+            .current_dir(root)
+            .args(["test", "--workspace"]))?;
+    }
+    if !parts.python {
+        return Ok(());
+    }
+    // the CLI for the identity tests (already built by `cargo test`; quick otherwise)
+    run(Command::new(&cargo)
+        .current_dir(root)
+        .args(["build", "-p", "cli"]))?;
+    let venv = root.join("target").join("venv");
+    let python = virtual_env(&venv)?;
+    // as if activated: maturin's build backend calls `maturin` from PATH
+    let path = std::env::join_paths(std::iter::once(venv.join("bin")).chain(
+        std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()),
+    ))?;
+    let pip = |args: &[&str]| -> Result<(), Error> {
+        run(Command::new(&python)
+            .current_dir(root)
+            .env("PATH", &path)
+            .args(["-m", "pip", "install", "--disable-pip-version-check", "-q"])
+            .args(args))
+    };
+    pip(PYTHON_TEST_REQUIREMENTS)?;
+    // build the package from source on the dev profile (opt-level 3), sharing target/
+    run(Command::new(&python)
+        .current_dir(root)
+        .env("PATH", &path)
+        .env("MATURIN_PEP517_ARGS", "--profile dev")
+        .args([
+            "-m",
+            "pip",
+            "install",
+            "--disable-pip-version-check",
+            "-q",
+            "--no-build-isolation",
+            "--force-reinstall",
+            "--no-deps",
+            "./crates/python",
+        ]))?;
+    let cli = root.join("target").join("debug").join("stickiness");
+    run(Command::new(&python)
+        .current_dir(root)
+        .env("PATH", &path)
+        .env("STICKINESS_CLI", &cli)
+        .env("MPLBACKEND", "Agg")
+        .args(["-m", "pytest", "-q", "crates/python/tests"]))?;
+    Ok(())
+}
