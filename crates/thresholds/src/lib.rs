@@ -45,10 +45,12 @@ pub mod laws;
 pub mod stick;
 
 pub use contact::{Contact, ContactError, Geometry, Material, Warning};
-pub use dynamics::{Collider, Collision, DynamicsError, Outcome, SolverOptions};
+pub use dynamics::{
+    Collider, Collision, DynamicsError, Outcome, SolverOptions, StickingCriterion, TrajectoryPoint,
+};
 pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
-pub use greenwood::{CrackLaw, OutOfRange};
+pub use greenwood::{CrackLaw, GreenwoodError, OutOfRange};
 pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
 pub use stick::{
     sticking_thresholds, sweep_t_vis, Hint, SearchOptions, StickingThresholds,

@@ -1,4 +1,4 @@
-//! `stickiness crack-law`: Greenwood's v(k, beta) by direct inversion.
+//! `stickiness crack-law`: Greenwood's v(k, beta).
 
 use crate::error::CliError;
 use crate::output::Report;
@@ -16,8 +16,12 @@ pub struct CrackLawArgs {
     pub beta: f64,
 }
 
-/// Runs the command.
+/// Runs the command: `v` from the tabulated law the model integrates with (as the Python
+/// package's `crack_speed`), `alpha` and `v_quadrature` from the direct inversion by quadrature
+/// (they agree to 1e-8).
 pub fn run(args: &CrackLawArgs) -> Result<Report, CliError> {
+    let law = greenwood::CrackLaw::new(args.k)?;
+    let v = law.v(args.beta)?;
     let point = greenwood::alpha_of_beta(args.k, args.beta)?;
     let mut input = serde_json::Map::new();
     input.insert("k".into(), args.k.into());
@@ -29,17 +33,10 @@ pub fn run(args: &CrackLawArgs) -> Result<Report, CliError> {
     ));
     r.number("k", args.k, "")?;
     r.number("beta", args.beta, "")?;
-    match point {
-        Some(p) => {
-            r.number("alpha", p.alpha, "")?;
-            r.number("v", p.v, "")?;
-        }
-        None => {
-            // beta = 1: alpha = infinity, v = 0
-            r.optional("alpha", None, "", "infinite (beta = 1)")?;
-            r.number("v", 0.0, "")?;
-        }
-    }
+    // beta = 1: alpha = infinity, v = 0
+    r.optional("alpha", point.map(|p| p.alpha), "", "infinite (beta = 1)")?;
+    r.number("v", v, "")?;
+    r.number("v_quadrature", point.map_or(0.0, |p| p.v), "")?;
     r.input(input);
     Ok(r)
 }

@@ -1,0 +1,153 @@
+//! `stickiness.Material`: the four SI constants of a grain material.
+
+use crate::error::{value_error, Error};
+use pyo3::prelude::*;
+use pyo3::types::PyType;
+use std::path::PathBuf;
+
+/// The four material constants of the model, in SI units.
+///
+/// `Material(gamma_sv, young, poisson, density)`: surface free energy gamma_SV (J/m^2; the
+/// contact uses the work of adhesion 2 gamma_SV), Young's modulus E (Pa), Poisson ratio nu
+/// (dimensionless, -1 < nu < 0.5) and density rho (kg/m^3). `Material.co2()` and
+/// `Material.h2o()` are the paper's ices (Arakawa & Krijt 2021, Section 3; CO2's E and nu from
+/// its sound speeds), `Material.from_json(path)` reads `{"gamma_sv", "young", "poisson",
+/// "density"}`. Materials compare by value, hash, and pickle.
+#[pyclass(frozen, module = "stickiness", name = "Material", from_py_object)]
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Material {
+    pub(crate) inner: thresholds::Material,
+}
+
+impl Material {
+    fn checked(inner: thresholds::Material) -> PyResult<Self> {
+        inner.validate().map_err(|e| value_error(&e))?;
+        Ok(Self { inner })
+    }
+}
+
+#[pymethods]
+impl Material {
+    #[new]
+    #[pyo3(signature = (gamma_sv, young, poisson, density))]
+    fn new(gamma_sv: f64, young: f64, poisson: f64, density: f64) -> PyResult<Self> {
+        Self::checked(thresholds::Material {
+            gamma_sv,
+            young,
+            poisson,
+            density,
+        })
+    }
+
+    /// CO2 ice (Section 3): gamma_SV = 0.08 J/m^2; E = 10.708 GPa and nu = 0.26066 from the
+    /// sound speeds 2900 and 1650 m/s at rho = 1560 kg/m^3.
+    #[staticmethod]
+    fn co2() -> Self {
+        Self {
+            inner: thresholds::Material::co2(),
+        }
+    }
+
+    /// H2O ice (Sections 3, 5.2): gamma_SV = 0.1 J/m^2, E = 7 GPa, nu = 0.25, rho = 930 kg/m^3.
+    #[staticmethod]
+    fn h2o() -> Self {
+        Self {
+            inner: thresholds::Material::h2o(),
+        }
+    }
+
+    /// A preset by name (`co2`, `h2o`, any case) or a JSON file's path.
+    #[staticmethod]
+    fn named(name: &str) -> PyResult<Self> {
+        thresholds::Material::from_name_or_path(name)
+            .map(|inner| Self { inner })
+            .map_err(|e| Error::from_contact(e, 0).into())
+    }
+
+    /// Reads a JSON material file `{"gamma_sv": .., "young": .., "poisson": .., "density": ..}`
+    /// (SI). A missing file raises `FileNotFoundError`; a bad or missing field `ValueError` naming
+    /// the file and the field.
+    #[staticmethod]
+    fn from_json(path: PathBuf) -> PyResult<Self> {
+        thresholds::Material::from_json_file(&path)
+            .map(|inner| Self { inner })
+            .map_err(|e| Error::from_contact(e, 0).into())
+    }
+
+    /// A copy with some constants replaced (SI), validated.
+    #[pyo3(signature = (*, gamma_sv=None, young=None, poisson=None, density=None))]
+    fn replace(
+        &self,
+        gamma_sv: Option<f64>,
+        young: Option<f64>,
+        poisson: Option<f64>,
+        density: Option<f64>,
+    ) -> PyResult<Self> {
+        let m = self.inner;
+        Self::checked(thresholds::Material {
+            gamma_sv: gamma_sv.unwrap_or(m.gamma_sv),
+            young: young.unwrap_or(m.young),
+            poisson: poisson.unwrap_or(m.poisson),
+            density: density.unwrap_or(m.density),
+        })
+    }
+
+    /// Surface free energy gamma_SV (J/m^2).
+    #[getter]
+    fn gamma_sv(&self) -> f64 {
+        self.inner.gamma_sv
+    }
+
+    /// Young's modulus E (Pa).
+    #[getter]
+    fn young(&self) -> f64 {
+        self.inner.young
+    }
+
+    /// Poisson ratio nu (dimensionless).
+    #[getter]
+    fn poisson(&self) -> f64 {
+        self.inner.poisson
+    }
+
+    /// Density rho (kg/m^3).
+    #[getter]
+    fn density(&self) -> f64 {
+        self.inner.density
+    }
+
+    fn __repr__(&self) -> String {
+        use greenwood::format::number;
+        let m = &self.inner;
+        format!(
+            "Material(gamma_sv={}, young={}, poisson={}, density={})",
+            number(m.gamma_sv),
+            number(m.young),
+            number(m.poisson),
+            number(m.density)
+        )
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .cast::<Material>()
+            .is_ok_and(|o| o.get().inner == self.inner)
+    }
+
+    fn __hash__(&self) -> u64 {
+        let m = &self.inner;
+        [m.gamma_sv, m.young, m.poisson, m.density]
+            .iter()
+            .fold(0xcbf2_9ce4_8422_2325u64, |h, x| {
+                (h ^ x.to_bits()).wrapping_mul(0x0100_0000_01b3)
+            })
+    }
+
+    fn __reduce__<'py>(&self, py: Python<'py>) -> (Bound<'py, PyType>, (f64, f64, f64, f64)) {
+        let m = &self.inner;
+        (
+            py.get_type::<Material>(),
+            (m.gamma_sv, m.young, m.poisson, m.density),
+        )
+    }
+}

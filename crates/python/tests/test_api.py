@@ -1,0 +1,160 @@
+"""The Python face: broadcasting, types, errors, warnings, pickling."""
+
+import dataclasses
+import math
+import pickle
+import warnings
+
+import numpy as np
+import pytest
+
+import stickiness as st
+
+CO2 = st.Material.co2()
+
+
+def same(a, b):
+    """Results equal field by field, NaN equal to NaN."""
+    return all(
+        np.array_equal(x, y, equal_nan=True)
+        for x, y in zip(dataclasses.astuple(a), dataclasses.astuple(b))
+    )
+
+
+def test_scalars_give_floats_and_arrays_give_broadcast_shapes():
+    r = st.v_stick(CO2, radius=60e-6, t_vis=1e-10)
+    assert type(r.v_stick) is float and type(r.v_stick_jkr) is float
+    t = np.geomspace(1e-12, 1e-9, 3)
+    radius = np.array([[30e-6], [60e-6]])
+    r = st.v_stick(CO2, radius=radius, t_vis=t)
+    assert r.v_stick.shape == (2, 3) and r.v_stick_jkr.shape == (2, 3)
+    # each element equals the scalar call
+    assert r.v_stick[1, 2] == st.v_stick(CO2, radius=60e-6, t_vis=t[2]).v_stick
+    j = st.jkr(CO2, radius=[1e-6, 2e-6, 3e-6])
+    assert j.a_eq.shape == (3,)
+    v = st.crack_speed(np.array([0.01, 0.02]), np.array([[0.5], [2.0]]))
+    assert v.shape == (2, 2)
+    c = st.collide(CO2, t_vis=1e-9, v_in=[0.035, 0.045])
+    assert list(c.outcome) == ["sticking", "bouncing"]
+    assert math.isnan(c.contact_time[0]) and c.contact_time[1] > 0
+    assert st.t_vis_law("co2", np.array([1e-6, 2e-6])).shape == (2,)
+
+
+def test_empty_arrays():
+    r = st.v_stick(CO2, t_vis=np.array([]))
+    assert r.v_stick.shape == (0,)
+
+
+def test_bad_values_name_the_argument_and_element():
+    with pytest.raises(ValueError, match=r"^radius\[1\] = nan: must be > 0 and finite \(m\)$"):
+        st.v_stick(CO2, radius=[60e-6, np.nan], t_vis=1e-9)
+    with pytest.raises(ValueError, match=r"^radius = -1\.0: must be > 0 and finite \(m\)$"):
+        st.jkr(CO2, radius=-1.0)
+    with pytest.raises(ValueError, match=r"^t_vis\[0, 1\] = -1e-9: must be >= 0"):
+        st.v_stick(CO2, radius=[60e-6, 30e-6], t_vis=[[1e-9, -1e-9]])
+    with pytest.raises(ValueError, match=r"^k = 1\.5: must be 0 < k < 1"):
+        st.v_stick(CO2, t_vis=1e-9, k=1.5)
+    with pytest.raises(ValueError, match=r"^beta\[2\] = 200\.0"):
+        st.crack_speed(0.01, [0.5, 1.0, 200.0])
+    with pytest.raises(ValueError, match=r"^v_in = 0\.0"):
+        st.collide(CO2, t_vis=1e-9, v_in=0.0)
+    with pytest.raises(ValueError, match=r"^t_vis = 0\.0: must be > 0"):
+        st.collide(CO2, t_vis=0.0, v_in=1.0)
+    with pytest.raises(ValueError, match=r"^young = -1\.0: must be > 0"):
+        st.Material(gamma_sv=0.1, young=-1.0, poisson=0.25, density=930.0)
+    with pytest.raises(ValueError, match="radius2 and wall"):
+        st.jkr(CO2, radius2=1e-6, wall=True)
+    with pytest.raises(ValueError, match="cannot be broadcast"):
+        st.v_stick(CO2, radius=[1e-6, 2e-6], t_vis=[1e-9, 1e-10, 1e-11])
+
+
+def test_fit_below_jkr_gives_v_stick_jkr():
+    # Section 5.1: V_stick > V_stick,JKR = 0.0166 m/s for every T_vis > 0
+    with pytest.raises(ValueError, match=r"^v_stick = 0\.016: must be > V_stick,JKR = 0\.0165940"):
+        st.fit_t_vis(CO2, v_stick=0.016)
+
+
+def test_wrong_types():
+    with pytest.raises(TypeError, match="radius"):
+        st.jkr(CO2, radius="sixty")
+    with pytest.raises(TypeError, match="t_vis"):
+        st.v_stick(CO2, t_vis=[1e-9 + 1j])
+    with pytest.raises(TypeError, match="material"):
+        st.jkr(42)
+    with pytest.raises(TypeError, match="v_in"):
+        st.collide(CO2, t_vis=1e-9)
+    with pytest.raises(TypeError, match="t_vis"):
+        st.v_stick(CO2)
+    with pytest.raises(ValueError, match="t_vis_law"):
+        st.t_vis_law("co3", 1e-6)
+    # integers and lists of numbers are numbers (1 and 2 m earn a warning)
+    with pytest.warns(st.StickinessWarning):
+        assert st.jkr(CO2, radius=[1, 2]).a_eq.shape == (2,)
+
+
+def test_no_bouncing_is_nan_with_the_limit():
+    r = st.v_stick(CO2, t_vis=[1e-9, 1e-6], v_max=2.0)
+    assert not math.isnan(r.v_stick[0]) and math.isnan(r.no_bouncing_below[0])
+    assert math.isnan(r.v_stick[1]) and r.no_bouncing_below[1] == 2.0
+
+
+def test_warnings():
+    with pytest.warns(st.StickinessWarning, match="Tabor"):
+        st.jkr(CO2, radius=1e-8)
+    with pytest.warns(st.StickinessWarning, match="did you mean 60e-6 m"):
+        st.jkr(CO2, radius=60.0)
+    with pytest.warns(st.StickinessWarning, match=r"2 of 3 elements"):
+        st.jkr(CO2, radius=[60.0, 60e-6, 70.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        st.jkr(CO2, radius=60e-6)  # no warning for the paper's grains
+    assert issubclass(st.StickinessWarning, UserWarning)
+    assert issubclass(st.SolverError, RuntimeError)
+
+
+def test_material_value_semantics(tmp_path):
+    assert st.Material.co2() == CO2 and st.Material.h2o() != CO2
+    assert hash(st.Material.co2()) == hash(CO2)
+    assert pickle.loads(pickle.dumps(CO2)) == CO2
+    assert repr(st.Material.h2o()) == "Material(gamma_sv=0.1, young=7000000000.0, poisson=0.25, density=930.0)"
+    m = eval(repr(CO2), {"Material": st.Material})
+    assert m == CO2
+    assert CO2.replace(density=1650.0).density == 1650.0
+    p = tmp_path / "ice.json"
+    p.write_text('{"gamma_sv": 0.1, "young": 7e9, "poisson": 0.25, "density": 930}')
+    assert st.Material.from_json(p) == st.Material.h2o()
+    p.write_text('{"gamma_sv": 0.1, "young": 7e9, "poisson": 0.25, "density": -930}')
+    with pytest.raises(ValueError, match=r"ice\.json: density = -930\.0"):
+        st.Material.from_json(p)
+    with pytest.raises(FileNotFoundError):
+        st.Material.from_json(tmp_path / "missing.json")
+    # a preset name works wherever a material does
+    assert st.jkr("h2o", radius=90e-6) == st.jkr(st.Material.h2o(), radius=90e-6)
+
+
+def test_trajectory():
+    c = st.collide(CO2, t_vis=1e-9, v_in=0.045, trajectory=True)
+    t = c.trajectory
+    assert set(t) >= {"t", "a", "delta", "delta_dot", "beta"}
+    assert t["delta"][0] == 0.0 and t["delta_dot"][0] == 0.045  # Section 2.6
+    assert abs(t["beta"][0] / 0.0101 - 1) < 1e-9  # beta = (1 + eps) k
+    assert np.all(np.diff(t["t"]) > 0)
+    assert st.collide(CO2, t_vis=1e-9, v_in=0.045).trajectory is None
+    with pytest.raises(ValueError, match="scalar"):
+        st.collide(CO2, t_vis=1e-9, v_in=[0.04, 0.05], trajectory=True)
+
+
+def test_geometry_arguments():
+    a = st.v_stick(CO2, radius=60e-6, radius2=30e-6, t_vis=1e-9)
+    b = st.v_stick(CO2, radius=30e-6, radius2=60e-6, t_vis=1e-9)
+    assert same(a, b)  # swapping the spheres changes nothing, to the bit
+    equal = st.v_stick(CO2, radius=60e-6, radius2=60e-6, t_vis=1e-9)
+    assert same(equal, st.v_stick(CO2, radius=60e-6, t_vis=1e-9))
+    law = st.v_stick(CO2, radius=60e-6, t_vis_law="co2")
+    assert law.t_vis == st.t_vis_law("co2", 60e-6)
+    with pytest.raises(ValueError, match="not both"):
+        st.v_stick(CO2, t_vis=1e-9, t_vis_law="co2")
+
+
+def test_version():
+    assert isinstance(st.__version__, str) and st.__version__.count(".") == 2

@@ -1,0 +1,42 @@
+"""The type stubs match the module (mypy's stubtest), and the examples run."""
+
+import os
+import pathlib
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parents[3]
+
+
+def test_stubs_match_the_module():
+    allow = pathlib.Path(__file__).with_name("stubtest_allowlist.txt")
+    out = subprocess.run(
+        [sys.executable, "-m", "mypy.stubtest", "stickiness", "--allowlist", str(allow)],
+        capture_output=True,
+        text=True,
+    )
+    assert out.returncode == 0, out.stdout + out.stderr
+
+
+def run_example(name, *args, tmp):
+    env = dict(os.environ, MPLBACKEND="Agg")
+    return subprocess.run(
+        [sys.executable, str(ROOT / "examples" / "python" / name), *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp,
+        timeout=600,
+    )
+
+
+def test_quickstart_runs(tmp_path):
+    out = run_example("quickstart.py", tmp=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert "V_stick" in out.stdout
+
+
+def test_figure4_redraws(tmp_path):
+    out = run_example("figure4.py", str(tmp_path / "fig4.png"), tmp=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert (tmp_path / "fig4.png").stat().st_size > 10_000
