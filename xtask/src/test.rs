@@ -23,6 +23,7 @@ pub const PYTHON_TEST_REQUIREMENTS: &[&str] = &[
     "pandas>=1.5",
     "matplotlib>=3.5",
     "mypy>=1.10",
+    "dask[distributed]>=2023.1",
 ];
 
 /// Which parts to run.

@@ -51,6 +51,15 @@ enum Command {
     ///
     /// Without --t-vis or --t-vis-law, T_vis = 0: the JKR limit V_frag,JKR.
     VFrag(commands::v_frag::VFragArgs),
+    /// V_stick, V_double_onset, V_stick,JKR and V_frag over a grid, into a file that survives
+    /// being killed.
+    ///
+    /// Every axis takes a comma list or START:STOP:N (N log-spaced values, both ends included);
+    /// the grid is their product in the order material, gamma_sv, radius, radius2, t_vis, k
+    /// (outermost first). Rows are computed on all cores (--jobs) and written in grid order as
+    /// soon as they and all before them are done; --resume keeps the complete rows of an
+    /// interrupted file and computes the rest, giving the same bytes as an uninterrupted run.
+    Sweep(commands::sweep::SweepArgs),
 }
 
 fn main() -> ExitCode {
@@ -63,6 +72,7 @@ fn main() -> ExitCode {
         Command::VStick(a) => commands::v_stick::run(a),
         Command::FitTVis(a) => commands::fit_t_vis::run(a),
         Command::VFrag(a) => commands::v_frag::run(a),
+        Command::Sweep(a) => commands::sweep::run(a),
     };
     match result {
         Ok(report) => {
@@ -73,5 +83,16 @@ fn main() -> ExitCode {
             eprintln!("error: {e}");
             e.exit_code()
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::CommandFactory;
+
+    /// clap's own consistency checks of every subcommand (unique names, conflicts that exist).
+    #[test]
+    fn commands_are_well_formed() {
+        super::Cli::command().debug_assert();
     }
 }

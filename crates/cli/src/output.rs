@@ -71,6 +71,11 @@ impl Report {
         }
     }
 
+    /// Adds a count (an integer).
+    pub fn count(&mut self, key: &str, n: usize) {
+        self.push(key, Value::from(n), "", "");
+    }
+
     /// Adds a string.
     pub fn text(&mut self, key: &str, value: &str) {
         self.push(key, Value::from(value), "", "");
@@ -123,7 +128,8 @@ impl Report {
         let mut out = format!("{}\n", self.title);
         for r in shown() {
             let shown = match &r.value {
-                Value::Number(n) => n.as_f64().map_or_else(|| n.to_string(), number),
+                Value::Number(n) if n.is_f64() => n.as_f64().map_or_else(|| n.to_string(), number),
+                Value::Number(n) => n.to_string(),
                 Value::String(s) => s.clone(),
                 Value::Null => r.none.clone(),
                 other => other.to_string(),

@@ -21,6 +21,7 @@ mod error;
 mod functions;
 mod material;
 mod parallel;
+mod sweep;
 
 use pyo3::prelude::*;
 
@@ -33,6 +34,8 @@ mod _core {
     use crate::functions::{collide, crack_speed, fit_t_vis, jkr, t_vis_law, v_frag, v_stick};
     #[pymodule_export]
     use crate::material::Material;
+    #[pymodule_export]
+    use crate::sweep::{sweep, sweep_chunk_count};
 
     use pyo3::prelude::*;
 

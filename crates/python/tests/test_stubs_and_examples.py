@@ -40,3 +40,9 @@ def test_figure4_redraws(tmp_path):
     out = run_example("figure4.py", str(tmp_path / "fig4.png"), tmp=tmp_path)
     assert out.returncode == 0, out.stderr
     assert (tmp_path / "fig4.png").stat().st_size > 10_000
+
+
+def test_dask_example_runs(tmp_path):
+    out = run_example("dask_sweep.py", "--out", str(tmp_path / "s.csv"), tmp=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert (tmp_path / "s.csv").stat().st_size > 1000

@@ -38,11 +38,14 @@
 //!   over T_vis with hints from the neighbours.
 //! - [`fit`]: [`fit_t_vis`], the inverse problem.
 //! - [`laws`]: [`TVisLaw`], [`v_frag`] and [`fragmentation`].
+//! - [`sweep`]: grids of searches in chunks that keep their hints, shared by the CLI and the
+//!   Python package.
 
 pub mod error;
 pub mod fit;
 pub mod laws;
 pub mod stick;
+pub mod sweep;
 
 pub use contact::{Contact, ContactError, Geometry, Material, Warning};
 pub use dynamics::{

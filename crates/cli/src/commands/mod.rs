@@ -5,6 +5,7 @@ pub mod crack_law;
 pub mod fit_t_vis;
 pub mod jkr;
 pub mod material;
+pub mod sweep;
 pub mod v_frag;
 pub mod v_stick;
 

@@ -57,6 +57,7 @@ __all__ = [
     "fit_t_vis",
     "v_frag",
     "t_vis_law",
+    "sweep",
     "__version__",
 ]
 
@@ -527,3 +528,7 @@ def v_frag(
     )
     b.warn(d["warnings"])
     return VFrag(**{f: b.out(d[f]) for f in VFrag.__dataclass_fields__})
+
+
+# the sweep needs pandas only when it runs; importing it here costs nothing
+from .sweeps import sweep  # noqa: E402

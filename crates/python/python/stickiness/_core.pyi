@@ -20,6 +20,8 @@ __all__ = [
     "crack_speed",
     "fit_t_vis",
     "jkr",
+    "sweep",
+    "sweep_chunk_count",
     "t_vis_law",
     "v_frag",
     "v_stick",
@@ -113,3 +115,17 @@ def v_frag(
     v_max: Optional[float],
     rel_tol: float,
 ) -> Dict[str, Any]: ...
+def sweep(
+    materials: List[Tuple[str, Material]],
+    gamma_sv: Optional[List[float]],
+    radius: List[float],
+    radius2: Optional[List[float]],
+    wall: bool,
+    t_vis: Optional[List[float]],
+    t_vis_law: Optional[str],
+    k: List[float],
+    v_max: Optional[float],
+    rel_tol: float,
+    chunks: Optional[List[int]] = None,
+) -> Dict[str, Any]: ...
+def sweep_chunk_count(materials: int, gamma_sv: int, radius: int, radius2: int, k: int) -> int: ...

@@ -1,0 +1,308 @@
+//! `stickiness sweep`: grid order, identity with single-point searches, the file contract, and
+//! a kill -9 followed by --resume giving the same bytes as an uninterrupted run.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+mod common;
+
+use common::{json, run};
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::Instant;
+
+fn dir(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("stickiness-sweep-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn sweep(args: &[&str], out: &Path) -> (i32, String, String) {
+    let mut a: Vec<String> = vec!["sweep".into()];
+    a.extend(args.iter().map(|s| s.to_string()));
+    a.push("--out".into());
+    a.push(out.display().to_string());
+    run(&a)
+}
+
+/// Data rows as maps column -> field.
+fn rows(path: &Path) -> Vec<std::collections::BTreeMap<String, String>> {
+    let text = std::fs::read_to_string(path).unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let header: Vec<String> = lines.next().unwrap().split(',').map(String::from).collect();
+    lines
+        .map(|l| {
+            header
+                .iter()
+                .cloned()
+                .zip(l.split(',').map(String::from))
+                .collect()
+        })
+        .collect()
+}
+
+const SMALL: [&str; 6] = [
+    "--material",
+    "co2,h2o",
+    "--radius",
+    "1e-6:1e-5:2",
+    "--t-vis",
+    "1e-12,1e-10,1e-9",
+];
+
+/// Rows come in grid order (material, gamma_sv, radius, radius2, t_vis, k; outermost first) and
+/// each equals the single-point `v-stick` for its inputs: exactly for the first T_vis of a chunk
+/// (no hint), within the bracket tolerance (1e-6) for the rest (seeded by their neighbour).
+#[test]
+fn rows_in_grid_order_equal_single_points() {
+    let d = dir("order");
+    let out = d.join("s.csv");
+    let (code, _, err) = sweep(&[&SMALL[..], &["--k", "0.01,0.02"]].concat(), &out);
+    assert_eq!(code, 0, "{err}");
+    let rows = rows(&out);
+    assert_eq!(rows.len(), 2 * 2 * 3 * 2);
+    let mut i = 0;
+    for material in ["co2", "h2o"] {
+        for radius in ["1e-6", "0.00001"] {
+            for (ti, t_vis) in ["1e-12", "1e-10", "1e-9"].iter().enumerate() {
+                for k in ["0.01", "0.02"] {
+                    let r = &rows[i];
+                    assert_eq!(
+                        (
+                            r["material"].as_str(),
+                            r["radius"].as_str(),
+                            r["t_vis"].as_str(),
+                            r["k"].as_str()
+                        ),
+                        (material, radius, *t_vis, k),
+                        "row {i}"
+                    );
+                    let single = json(&[
+                        "v-stick",
+                        "--material",
+                        material,
+                        "--radius",
+                        radius,
+                        "--t-vis",
+                        t_vis,
+                        "--k",
+                        k,
+                        "--json",
+                    ]);
+                    for key in [
+                        "v_stick",
+                        "v_double_onset",
+                        "v_stick_jkr",
+                        "no_bouncing_below",
+                    ] {
+                        // an empty field is JSON's null
+                        let a: Option<f64> = r[key].parse().ok();
+                        let b = single[key].as_f64();
+                        match (a, b) {
+                            (Some(a), Some(b)) if ti > 0 && key != "v_stick_jkr" => {
+                                assert!((a / b - 1.0).abs() < 2e-6, "row {i} {key}: {a} vs {b}")
+                            }
+                            _ => assert_eq!(a, b, "row {i} {key}"),
+                        }
+                    }
+                    let vs: Option<f64> = r["v_stick"].parse().ok();
+                    assert_eq!(r["v_frag"].parse::<f64>().ok(), vs.map(|v| 10.0 * v));
+                    i += 1;
+                }
+            }
+        }
+    }
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// A sweep killed with SIGKILL part-way, then run again with --resume, ends byte-identical to
+/// an uninterrupted run (the kill lands at half the uninterrupted duration; a kill after the
+/// end is retried earlier).
+#[test]
+fn kill_and_resume_gives_the_same_bytes() {
+    let d = dir("resume");
+    let args = [
+        "--material",
+        "co2,h2o",
+        "--radius",
+        "1e-6:1e-4:41",
+        "--t-vis",
+        "1e-12:1e-8:9",
+    ];
+    let whole = d.join("whole.csv");
+    let start = Instant::now();
+    let (code, _, err) = sweep(&args, &whole);
+    assert_eq!(code, 0, "{err}");
+    let duration = start.elapsed();
+    let expected = std::fs::read(&whole).unwrap();
+    let mut delay = duration / 2;
+    let part = d.join("part.csv");
+    let mut interrupted = false;
+    for _ in 0..5 {
+        let _ = std::fs::remove_file(&part);
+        let mut child = Command::new(env!("CARGO_BIN_EXE_stickiness"))
+            .arg("sweep")
+            .args(args)
+            .arg("--out")
+            .arg(&part)
+            .stdout(Stdio::null())
+            .stderr(Stdio::null())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(delay);
+        child.kill().unwrap(); // SIGKILL
+        let status = child.wait().unwrap();
+        let written = std::fs::read(&part).unwrap_or_default();
+        if !status.success() && written.len() < expected.len() {
+            // what was written up to its last complete line is the start of the whole file
+            let complete = written
+                .iter()
+                .rposition(|b| *b == b'\n')
+                .map_or(0, |i| i + 1);
+            assert!(expected.starts_with(&written[..complete]));
+            interrupted = true;
+            break;
+        }
+        delay /= 2;
+    }
+    assert!(
+        interrupted,
+        "the sweep always finished before the kill ({duration:?})"
+    );
+    let (code, _, err) = sweep(&[&args[..], &["--resume"]].concat(), &part);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        std::fs::read(&part).unwrap() == expected,
+        "the resumed file differs"
+    );
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// --resume drops a torn last line; an existing file needs --resume or --force; a file of
+/// another sweep is refused; bad axes exit 2 naming the flag before any file is written.
+#[test]
+fn file_contract() {
+    let d = dir("contract");
+    let out = d.join("s.csv");
+    let (code, _, err) = sweep(&SMALL, &out);
+    assert_eq!(code, 0, "{err}");
+    let whole = std::fs::read_to_string(&out).unwrap();
+    // tear the file in the middle of its last line, and drop one more row
+    let cut = whole.trim_end().rfind('\n').unwrap();
+    let cut = whole[..cut].rfind('\n').unwrap() + 20;
+    std::fs::write(&out, &whole[..cut]).unwrap();
+    let (code, _, err) = sweep(&[&SMALL[..], &["--resume"]].concat(), &out);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), whole);
+    let (code, _, err) = sweep(&SMALL, &out);
+    assert_eq!(code, 2);
+    assert!(err.contains("--resume") && err.contains("--force"), "{err}");
+    let (code, _, err) = sweep(&["--material", "co2", "--t-vis", "1e-9", "--resume"], &out);
+    assert_eq!(code, 2);
+    assert!(err.contains("another sweep"), "{err}");
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap(),
+        whole,
+        "a refused resume changes nothing"
+    );
+    let (code, _, err) = sweep(&["--material", "co2", "--t-vis", "1e-9", "--force"], &out);
+    assert_eq!(code, 0, "{err}");
+    for (args, flag) in [
+        (
+            vec!["--radius", "1e-4:1e-6:0", "--t-vis", "1e-9"],
+            "--radius",
+        ),
+        (
+            vec!["--radius", "-1e-6,1e-6", "--t-vis", "1e-9"],
+            "--radius",
+        ),
+        (vec!["--material", "co2,co3", "--t-vis", "1e-9"], "co3"),
+        (vec!["--t-vis", "1e-9:abc:3"], "--t-vis"),
+        (vec!["--k", "0.01,1.5", "--t-vis", "1e-9"], "--k"),
+    ] {
+        let fresh = d.join("never.csv");
+        let (code, out_text, err) = sweep(&args, &fresh);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(err.contains(flag), "{args:?}: {err}");
+        assert!(out_text.is_empty());
+        assert!(
+            !fresh.exists(),
+            "{args:?}: a file was written before the check"
+        );
+    }
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// Geometry and law axes fill their columns; JSON Lines carry the same values.
+#[test]
+fn columns_and_jsonl() {
+    let d = dir("columns");
+    let csv = d.join("s.csv");
+    let (code, _, err) = sweep(
+        &[
+            "--material",
+            "co2",
+            "--radius",
+            "6e-5",
+            "--wall",
+            "--t-vis-law",
+            "co2",
+            "--gamma-sv",
+            "0.07,0.08",
+        ],
+        &csv,
+    );
+    assert_eq!(code, 0, "{err}");
+    let r = rows(&csv);
+    assert_eq!(r.len(), 2);
+    assert_eq!(
+        (r[0]["radius2"].as_str(), r[0]["wall"].as_str()),
+        ("", "true")
+    );
+    assert_eq!(
+        (r[0]["gamma_sv"].as_str(), r[1]["gamma_sv"].as_str()),
+        ("0.07", "0.08")
+    );
+    let t: f64 = r[0]["t_vis"].parse().unwrap();
+    assert!((t / (1e-11 * 60f64.powf(1.11)) - 1.0).abs() < 1e-12); // Section 5.3 CO2 law
+    let jl = d.join("s.jsonl");
+    let (code, _, err) = sweep(
+        &[
+            "--material",
+            "co2",
+            "--radius",
+            "6e-5",
+            "--wall",
+            "--t-vis-law",
+            "co2",
+            "--gamma-sv",
+            "0.07,0.08",
+            "--format",
+            "jsonl",
+        ],
+        &jl,
+    );
+    assert_eq!(code, 0, "{err}");
+    let text = std::fs::read_to_string(&jl).unwrap();
+    let lines: Vec<serde_json::Value> = text
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    assert!(lines[0]["sweep"]["columns"].is_array());
+    assert_eq!(
+        lines[1]["v_stick"].as_f64().unwrap(),
+        r[0]["v_stick"].parse::<f64>().unwrap()
+    );
+    assert_eq!(lines[1]["radius2"], serde_json::Value::Null);
+    std::fs::remove_dir_all(&d).unwrap();
+}
+
+/// Progress goes to stderr as plain lines when stderr is not a terminal.
+#[test]
+fn progress_lines_when_not_a_terminal() {
+    let d = dir("progress");
+    let (code, _, err) = sweep(&SMALL, &d.join("s.csv"));
+    assert_eq!(code, 0);
+    assert!(err.contains("sweep: 12/12 rows (100.0 %)"), "{err}");
+    std::fs::remove_dir_all(&d).unwrap();
+}

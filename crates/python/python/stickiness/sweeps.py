@@ -1,0 +1,228 @@
+"""Sweeps over a grid as a pandas DataFrame, in process or on a Dask cluster.
+
+The grid is the product of its axes in the order material, gamma_sv, radius, radius2, t_vis, k
+(outermost first), computed in chunks: one chunk holds every T_vis of one combination of the
+other axes, each search seeded by its neighbour's thresholds. The chunks are those of the CLI's
+``stickiness sweep`` (both come from the Rust ``thresholds::sweep``), so the values are the
+same. With a ``dask.distributed.Client`` the chunks are mapped over its workers: a lost worker
+costs a recomputed chunk, never a row, and the result equals the in-process one.
+
+``pandas`` is needed (``pip install 'stickiness[sweep]'``); ``dask.distributed`` only for
+``client=``.
+"""
+
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _core
+from ._core import Material
+
+#: The DataFrame's columns, as the CLI's CSV header.
+COLUMNS = (
+    "material",
+    "gamma_sv",
+    "young",
+    "poisson",
+    "density",
+    "radius",
+    "radius2",
+    "wall",
+    "t_vis",
+    "k",
+    "v_stick",
+    "v_double_onset",
+    "v_stick_jkr",
+    "v_frag",
+    "no_bouncing_below",
+    "warnings",
+)
+
+#: Chunks computed between two progress updates (and Ctrl-C checks) in process: 4 a core.
+_CHUNKS_PER_UPDATE = 8
+
+
+def _axis(name: str, values: Any) -> Tuple[float, ...]:
+    from . import _float_array
+
+    a = _float_array(name, values).reshape(-1)
+    if a.size == 0:
+        raise ValueError(f"{name}: an axis needs at least one value")
+    return tuple(float(x) for x in a)
+
+
+def _materials(material: Any) -> Tuple[Tuple[str, Material], ...]:
+    """``(name, Material)`` pairs: a preset name or path, a Material, or a list of these."""
+    items = material if isinstance(material, (list, tuple)) else [material]
+    if not items:
+        raise ValueError("material: at least one material")
+    out = []
+    for m in items:
+        if isinstance(m, str):
+            out.append((m, Material.named(m)))
+        elif isinstance(m, Material):
+            preset = {Material.co2(): "co2", Material.h2o(): "h2o"}.get(m)
+            out.append((preset or repr(m), m))
+        elif isinstance(m, tuple) and len(m) == 2 and isinstance(m[1], Material):
+            out.append((str(m[0]), m[1]))
+        else:
+            raise TypeError(
+                f"material: expected preset names, paths or stickiness.Material, got {type(m).__name__}"
+            )
+    return tuple(out)
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    """A sweep grid and its search options (SI); picklable, so it travels to Dask workers."""
+
+    materials: Tuple[Tuple[str, Material], ...]
+    gamma_sv: Optional[Tuple[float, ...]]
+    radius: Tuple[float, ...]
+    radius2: Optional[Tuple[float, ...]]
+    wall: bool
+    t_vis: Optional[Tuple[float, ...]]
+    t_vis_law: Optional[str]
+    k: Tuple[float, ...]
+    v_max: Optional[float]
+    rel_tol: float
+
+    @property
+    def n_chunks(self) -> int:
+        """Chunks of the grid: one per combination of every axis but T_vis."""
+        return int(
+            _core.sweep_chunk_count(
+                len(self.materials),
+                len(self.gamma_sv) if self.gamma_sv else 1,
+                len(self.radius),
+                len(self.radius2) if self.radius2 else 1,
+                len(self.k),
+            )
+        )
+
+    def compute(self, chunks: Optional[Sequence[int]] = None) -> Dict[str, Any]:
+        """The rows of ``chunks`` (all by default) as columns, with their ``index`` in grid order."""
+        try:
+            return dict(
+                _core.sweep(
+                    list(self.materials),
+                    None if self.gamma_sv is None else list(self.gamma_sv),
+                    list(self.radius),
+                    None if self.radius2 is None else list(self.radius2),
+                    self.wall,
+                    None if self.t_vis is None else list(self.t_vis),
+                    self.t_vis_law,
+                    list(self.k),
+                    self.v_max,
+                    self.rel_tol,
+                    None if chunks is None else list(chunks),
+                )
+            )
+        except _core._InputError as e:
+            field, _, rest = e.args
+            raise ValueError(field + rest) from None
+
+
+def compute_chunks(spec: SweepSpec, chunks: Sequence[int]) -> Dict[str, Any]:
+    """One task of a distributed sweep: the rows of ``chunks`` (a top-level, picklable function)."""
+    return spec.compute(chunks)
+
+
+def _frame(parts: Iterable[Dict[str, Any]]) -> Any:
+    import pandas as pd  # type: ignore[import-untyped,unused-ignore]
+
+    parts = list(parts)
+    if not parts:
+        return pd.DataFrame({c: [] for c in COLUMNS})
+    columns = {c: np.concatenate([np.asarray(p[c]) for p in parts]) for c in ("index",) + COLUMNS}
+    df = pd.DataFrame(columns).sort_values("index", kind="stable")
+    df["warnings"] = df["warnings"].astype(str)
+    return df.drop(columns="index").reset_index(drop=True)
+
+
+def _batches(n: int, size: int) -> List[List[int]]:
+    return [list(range(i, min(i + size, n))) for i in range(0, n, size)]
+
+
+def sweep(
+    material: Union[str, Material, Sequence[Union[str, Material]]] = "co2",
+    radius: Any = 60e-6,
+    t_vis: Any = None,
+    gamma_sv: Any = None,
+    k: Any = 0.01,
+    t_vis_law: Optional[str] = None,
+    radius2: Any = None,
+    wall: bool = False,
+    client: Any = None,
+    progress: bool = False,
+    v_max: Optional[float] = None,
+    rel_tol: float = 1e-6,
+    chunks_per_task: int = 1,
+) -> Any:
+    """V_stick, V_double_onset, V_stick,JKR and V_frag = 10 V_stick over a grid (SI).
+
+    Every axis (``material``, ``gamma_sv``, ``radius``, ``radius2``, ``t_vis``, ``k``) takes one
+    value or a sequence; the grid is their product in that order (outermost first).
+    ``gamma_sv=None`` keeps each material's; ``t_vis_law='co2'|'h2o'`` takes T_vis from the size
+    law at each radius instead of a ``t_vis`` axis; ``radius2=None`` means identical spheres and
+    ``wall=True`` a sphere on a wall.
+
+    Returns a pandas DataFrame with the CLI's columns (``stickiness sweep``) and values, NaN
+    where a value does not exist. ``client=None`` computes on all cores of this process;
+    ``client=`` a ``dask.distributed.Client`` maps ``chunks_per_task`` chunks a task over its
+    workers (a ``LocalCluster`` or a Slurm cluster from dask-jobqueue alike), with the same
+    result. ``progress=True`` shows progress on stderr (Dask's progress bar with a client).
+    """
+    if isinstance(wall, (bool, np.bool_)) is False:
+        raise TypeError(f"wall: expected a bool, got {type(wall).__name__}")
+    if wall and radius2 is not None:
+        raise ValueError("radius2 and wall=True exclude each other (a wall is R2 -> infinity)")
+    if (t_vis is None) == (t_vis_law is None):
+        raise TypeError("give one of t_vis (s) and t_vis_law ('co2' or 'h2o')")
+    if not isinstance(chunks_per_task, int) or chunks_per_task < 1:
+        raise ValueError(f"chunks_per_task = {chunks_per_task!r}: must be an integer >= 1")
+    from . import _scalar, _scalar_option
+
+    spec = SweepSpec(
+        materials=_materials(material),
+        gamma_sv=None if gamma_sv is None else _axis("gamma_sv", gamma_sv),
+        radius=_axis("radius", radius),
+        radius2=None if radius2 is None else _axis("radius2", radius2),
+        wall=bool(wall),
+        t_vis=None if t_vis is None else _axis("t_vis", t_vis),
+        t_vis_law=t_vis_law,
+        k=_axis("k", k),
+        v_max=_scalar_option("v_max", v_max),
+        rel_tol=_scalar("rel_tol", rel_tol),
+    )
+    # check the whole grid before any work (the core validates the axes on every call)
+    spec.compute([])
+    batches = _batches(spec.n_chunks, chunks_per_task)
+    if client is None:
+        parts = []
+        done = 0
+        for group in _batches(len(batches), _CHUNKS_PER_UPDATE):
+            chunks = [c for b in group for c in batches[b]]
+            parts.append(spec.compute(chunks))
+            done += len(chunks)
+            if progress:
+                print(f"\rsweep: {done}/{spec.n_chunks} chunks", end="", file=sys.stderr)
+        if progress:
+            print(file=sys.stderr)
+        return _frame(parts)
+    futures = client.map(
+        compute_chunks,
+        [spec] * len(batches),
+        batches,
+        pure=True,
+        retries=3,
+    )
+    if progress:
+        from distributed import progress as dask_progress  # type: ignore[import-untyped,unused-ignore]
+
+        dask_progress(futures)
+    return _frame(client.gather(futures))

@@ -1,0 +1,340 @@
+//! Sweeps: V_stick, V_frag and their companions over a grid of materials, surface energies,
+//! radii, partner radii, relaxation times and k.
+//!
+//! The grid is the product of its axes in the order material, gamma_sv, radius, radius2, t_vis,
+//! k (outermost first); [`Grid::index`] numbers its points in that order. It is computed in
+//! [`Chunk`]s: one chunk holds every T_vis of one combination of the other axes, in increasing
+//! order of the T_vis axis, and each search after the first is seeded with its neighbour's
+//! thresholds (as [`crate::sweep_t_vis`]). Every front end (the CLI's `stickiness sweep`, the
+//! Python `stickiness.sweep` in process or on a Dask cluster) computes the same chunks the same
+//! way, so they give the same numbers, and a chunk computed twice (a retried task, a resumed
+//! file) gives the same rows. A chunk can start part-way, from the hint its last completed row
+//! gives ([`Chunk::compute_from`]): a resumed sweep equals an uninterrupted one.
+
+use crate::laws::{v_frag, TVisLaw};
+use crate::stick::{sticking_thresholds, Hint, SearchOptions, StickingThresholds};
+use crate::ThresholdsError;
+use contact::{Contact, Geometry, Material};
+use greenwood::{CrackLaw, OutOfRange};
+
+/// One material of a sweep: its name (as given: a preset or a file path) and its constants.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NamedMaterial {
+    /// The name as given (`co2`, `h2o`, a path).
+    pub name: String,
+    /// The constants (SI).
+    pub material: Material,
+}
+
+/// The second body of every point of a sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Partner {
+    /// Identical spheres: R2 = R1.
+    Same,
+    /// Spheres of these radii R2 (m): an axis of the grid.
+    Radii(Vec<f64>),
+    /// A flat wall.
+    Wall,
+}
+
+/// Where the relaxation times come from.
+#[derive(Debug, Clone, PartialEq)]
+pub enum TVisAxis {
+    /// These T_vis (s): an axis of the grid.
+    Values(Vec<f64>),
+    /// T_vis from a size law of R1 (Section 5.3): one value per radius.
+    Law(TVisLaw),
+}
+
+/// The axes of a sweep (SI).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Grid {
+    /// Materials (outermost axis).
+    pub materials: Vec<NamedMaterial>,
+    /// Surface free energies gamma_SV (J/m^2) replacing each material's; `None`: the material's.
+    pub gamma_sv: Option<Vec<f64>>,
+    /// Radii R1 (m).
+    pub radius: Vec<f64>,
+    /// The second body.
+    pub partner: Partner,
+    /// Relaxation times.
+    pub t_vis: TVisAxis,
+    /// Modulus ratios k (innermost axis).
+    pub k: Vec<f64>,
+}
+
+/// One point of the grid: the inputs of one search (SI).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Point {
+    /// Index of the point in grid order.
+    pub index: usize,
+    /// Index into [`Grid::materials`].
+    pub material: usize,
+    /// The material constants after the gamma_SV axis.
+    pub constants: Material,
+    /// The two bodies.
+    pub geometry: Geometry,
+    /// Relaxation time (s).
+    pub t_vis: f64,
+    /// Modulus ratio k.
+    pub k: f64,
+}
+
+/// The results of one point (SI); `None` where a value does not exist.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// The point.
+    pub point: Point,
+    /// V_stick (m/s).
+    pub v_stick: Option<f64>,
+    /// V_double_onset (m/s).
+    pub v_double_onset: Option<f64>,
+    /// V_stick,JKR (m/s).
+    pub v_stick_jkr: f64,
+    /// V_frag = 10 V_stick (m/s).
+    pub v_frag: Option<f64>,
+    /// The search limit when nothing bounced (m/s).
+    pub no_bouncing_below: Option<f64>,
+    /// The model's warnings for this point.
+    pub warnings: Vec<String>,
+}
+
+impl Row {
+    /// The hint this row gives the next T_vis of its chunk.
+    pub fn hint(&self) -> Option<Hint> {
+        Some(Hint {
+            v_double_onset: self.v_double_onset?,
+            v_stick: self.v_stick?,
+        })
+    }
+}
+
+/// All T_vis of one combination of the other axes: the unit of work of a sweep.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Chunk {
+    /// The points, in increasing order of the T_vis axis.
+    pub points: Vec<Point>,
+}
+
+fn check_axis(
+    field: &'static str,
+    values: &[f64],
+    ok: impl Fn(f64) -> bool,
+    allowed: &'static str,
+    unit: &'static str,
+) -> Result<(), OutOfRange> {
+    if values.is_empty() {
+        return Err(OutOfRange::new(field, f64::NAN, "at least one value", unit));
+    }
+    match values.iter().find(|v| !ok(**v)) {
+        Some(&v) => Err(OutOfRange::new(field, v, allowed, unit)),
+        None => Ok(()),
+    }
+}
+
+impl Grid {
+    fn n_gamma(&self) -> usize {
+        self.gamma_sv.as_ref().map_or(1, Vec::len)
+    }
+
+    fn n_radius2(&self) -> usize {
+        match &self.partner {
+            Partner::Radii(r) => r.len(),
+            _ => 1,
+        }
+    }
+
+    fn n_t_vis(&self) -> usize {
+        match &self.t_vis {
+            TVisAxis::Values(t) => t.len(),
+            TVisAxis::Law(_) => 1,
+        }
+    }
+
+    /// Number of points.
+    pub fn len(&self) -> usize {
+        self.materials.len()
+            * self.n_gamma()
+            * self.radius.len()
+            * self.n_radius2()
+            * self.n_t_vis()
+            * self.k.len()
+    }
+
+    /// Whether the grid has no point.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Checks every axis before any work: each non-empty, radii and T_vis finite and > 0
+    /// (T_vis >= 0), 0 < k < 1, gamma_SV > 0, and every material with its gamma_SV valid.
+    pub fn validate(&self) -> Result<(), OutOfRange> {
+        if self.materials.is_empty() {
+            return Err(OutOfRange::new(
+                "material",
+                f64::NAN,
+                "at least one material",
+                "name",
+            ));
+        }
+        let positive = |v: f64| v.is_finite() && v > 0.0;
+        if let Some(g) = &self.gamma_sv {
+            check_axis("gamma_sv", g, positive, "> 0 and finite", "J/m^2")?;
+        }
+        check_axis("radius", &self.radius, positive, "> 0 and finite", "m")?;
+        if let Partner::Radii(r) = &self.partner {
+            check_axis("radius2", r, positive, "> 0 and finite", "m")?;
+        }
+        if let TVisAxis::Values(t) = &self.t_vis {
+            check_axis(
+                "t_vis",
+                t,
+                |v| v.is_finite() && v >= 0.0,
+                ">= 0 and finite",
+                "s",
+            )?;
+        }
+        check_axis(
+            "k",
+            &self.k,
+            |v| v > 0.0 && v < 1.0,
+            "0 < k < 1",
+            "dimensionless",
+        )?;
+        for m in &self.materials {
+            for g in self.gamma_values(m) {
+                Material {
+                    gamma_sv: g,
+                    ..m.material
+                }
+                .validate()?;
+            }
+        }
+        Ok(())
+    }
+
+    fn gamma_values(&self, m: &NamedMaterial) -> Vec<f64> {
+        self.gamma_sv
+            .clone()
+            .unwrap_or_else(|| vec![m.material.gamma_sv])
+    }
+
+    /// The index of a point in grid order from its axis indices.
+    pub fn index(&self, m: usize, g: usize, r: usize, r2: usize, t: usize, k: usize) -> usize {
+        ((((m * self.n_gamma() + g) * self.radius.len() + r) * self.n_radius2() + r2)
+            * self.n_t_vis()
+            + t)
+            * self.k.len()
+            + k
+    }
+
+    /// The chunks of the grid, in grid order of their first points.
+    pub fn chunks(&self) -> Vec<Chunk> {
+        let mut out = Vec::new();
+        for (mi, m) in self.materials.iter().enumerate() {
+            for (gi, g) in self.gamma_values(m).into_iter().enumerate() {
+                let constants = Material {
+                    gamma_sv: g,
+                    ..m.material
+                };
+                for (ri, &r1) in self.radius.iter().enumerate() {
+                    for r2i in 0..self.n_radius2() {
+                        let geometry = match &self.partner {
+                            Partner::Same => Geometry::identical(r1),
+                            Partner::Radii(r2) => Geometry::spheres(r1, r2[r2i]),
+                            Partner::Wall => Geometry::wall(r1),
+                        };
+                        for (ki, &k) in self.k.iter().enumerate() {
+                            let t_values = match &self.t_vis {
+                                TVisAxis::Values(t) => t.clone(),
+                                TVisAxis::Law(law) => vec![law.t_vis(r1)],
+                            };
+                            let points = t_values
+                                .into_iter()
+                                .enumerate()
+                                .map(|(ti, t_vis)| Point {
+                                    index: self.index(mi, gi, ri, r2i, ti, ki),
+                                    material: mi,
+                                    constants,
+                                    geometry,
+                                    t_vis,
+                                    k,
+                                })
+                                .collect();
+                            out.push(Chunk { points });
+                        }
+                    }
+                }
+            }
+        }
+        out
+    }
+}
+
+impl Chunk {
+    /// Computes every point of the chunk.
+    pub fn compute(
+        &self,
+        laws: &impl Fn(f64) -> Result<CrackLaw, ThresholdsError>,
+        opts: &SearchOptions,
+    ) -> Result<Vec<Row>, ThresholdsError> {
+        self.compute_from(0, None, laws, opts, &mut |_| {})
+    }
+
+    /// Computes the points from `start` on, the first seeded with `hint` (the hint of point
+    /// `start - 1`, as [`Row::hint`] gives it), calling `done` with each row as it is found.
+    /// `laws(k)` gives the crack law of a k (build each once and share it).
+    pub fn compute_from(
+        &self,
+        start: usize,
+        hint: Option<Hint>,
+        laws: &impl Fn(f64) -> Result<CrackLaw, ThresholdsError>,
+        opts: &SearchOptions,
+        done: &mut impl FnMut(&Row),
+    ) -> Result<Vec<Row>, ThresholdsError> {
+        let mut hint = hint;
+        let mut rows = Vec::with_capacity(self.points.len().saturating_sub(start));
+        for p in self.points.iter().skip(start) {
+            let contact = Contact::new(p.constants, p.geometry)?;
+            let law = laws(p.k)?;
+            let o = SearchOptions { hint, ..*opts };
+            let th: StickingThresholds = sticking_thresholds(&contact, &law, p.t_vis, &o)?;
+            let row = Row {
+                point: p.clone(),
+                v_stick: th.v_stick,
+                v_double_onset: th.v_double_onset,
+                v_stick_jkr: th.v_stick_jkr,
+                v_frag: th.v_stick.map(v_frag),
+                no_bouncing_below: th.no_bouncing_below(),
+                warnings: contact.warnings().iter().map(|w| w.to_string()).collect(),
+            };
+            hint = row.hint();
+            done(&row);
+            rows.push(row);
+        }
+        Ok(rows)
+    }
+}
+
+/// The columns of a sweep's rows, in order: the inputs, then the results.
+pub const COLUMNS: [&str; 16] = [
+    "material",
+    "gamma_sv",
+    "young",
+    "poisson",
+    "density",
+    "radius",
+    "radius2",
+    "wall",
+    "t_vis",
+    "k",
+    "v_stick",
+    "v_double_onset",
+    "v_stick_jkr",
+    "v_frag",
+    "no_bouncing_below",
+    "warnings",
+];
+
+/// The SI units of [`COLUMNS`], for headers.
+pub const UNITS: &str = "gamma_sv [J/m^2], young [Pa], poisson [dimensionless], density [kg/m^3], radius, radius2 [m], t_vis [s], k [dimensionless], v_stick, v_double_onset, v_stick_jkr, v_frag, no_bouncing_below [m/s]";
