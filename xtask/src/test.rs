@@ -5,7 +5,10 @@
 //! 2. a virtual environment under `target/venv` with the Python test dependencies;
 //! 3. the package built from `crates/python` (`pip install ./crates/python`, maturin on the
 //!    workspace's opt-level-3 dev profile, so it reuses the build of step 1);
-//! 4. `pytest crates/python/tests`, with `STICKINESS_CLI` pointing at the binary of step 1.
+//! 4. DustPy for the coupling tests: its PyPI release is a source distribution built with
+//!    meson and f2py, so gfortran is installed first when missing (`apt-get`, as root; otherwise
+//!    the run stops with the command to run);
+//! 5. `pytest crates/python/tests`, with `STICKINESS_CLI` pointing at the binary of step 1.
 //!
 //! It installs what it needs itself and fails loudly on anything missing; it never skips.
 
@@ -25,6 +28,44 @@ pub const PYTHON_TEST_REQUIREMENTS: &[&str] = &[
     "mypy>=1.10",
     "dask[distributed]>=2023.1",
 ];
+
+/// The DustPy release the coupling is tested with.
+pub const DUSTPY: &str = "dustpy==1.0.9";
+
+/// Whether a command is on PATH.
+fn on_path(name: &str) -> bool {
+    std::env::var_os("PATH")
+        .is_some_and(|paths| std::env::split_paths(&paths).any(|dir| dir.join(name).is_file()))
+}
+
+/// gfortran for DustPy's build: present, or installed with apt-get when running as root.
+fn ensure_gfortran() -> Result<(), Error> {
+    if on_path("gfortran") {
+        return Ok(());
+    }
+    let root = Command::new("id")
+        .arg("-u")
+        .output()
+        .is_ok_and(|o| String::from_utf8_lossy(&o.stdout).trim() == "0");
+    if !(root && on_path("apt-get")) {
+        return Err("DustPy (tested by crates/python/tests/test_dustpy.py) is built from source and needs gfortran: run `sudo apt-get install gfortran` (or your system's package), then `cargo xtask test` again".into());
+    }
+    let install = || {
+        Command::new("apt-get")
+            .args(["install", "-y", "-q", "gfortran"])
+            .env("DEBIAN_FRONTEND", "noninteractive")
+            .status()
+            .is_ok_and(|s| s.success())
+    };
+    if install() {
+        return Ok(());
+    }
+    // a fresh machine may have no package lists yet
+    run(Command::new("apt-get").args(["update", "-q"]))?;
+    run(Command::new("apt-get")
+        .args(["install", "-y", "-q", "gfortran"])
+        .env("DEBIAN_FRONTEND", "noninteractive"))
+}
 
 /// Which parts to run.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -101,6 +142,8 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
             .args(args))
     };
     pip(PYTHON_TEST_REQUIREMENTS)?;
+    ensure_gfortran()?;
+    pip(&[DUSTPY])?;
     // build the package from source on the dev profile (opt-level 3), sharing target/
     run(Command::new(&python)
         .current_dir(root)

@@ -1,0 +1,174 @@
+"""The fragmentation velocity of a DustPy disc from grain physics (Arakawa & Krijt 2021, Sec. 6-7).
+
+UNITS: inputs are SI and kelvin (``monomer_radius`` in m, ``v_frag_refractory`` in m/s,
+temperatures in K); the OUTPUT IS IN cm/s, because DustPy works in cgs
+(``sim.dust.v.frag`` is in cm/s). 1 m/s = 100 cm/s.
+
+Dust-evolution codes take V_frag as a number chosen by hand. Here it follows from the ice that
+coats the monomers at each radius of the disc, by temperature:
+
+- ``T > t_h2o``: refractory (silicate) grains. The model has no relaxation time for them, so
+  V_frag is the user's ``v_frag_refractory`` (m/s);
+- ``t_co2 < T <= t_h2o``: H2O ice, V_frag = 10 V_stick with T_vis,H2O(R1) = 1e-10 s
+  (R1/1.5 um)^1.11 (Section 5.3, Gundlach et al. 2015) and the H2O constants of Section 5.2;
+- ``T <= t_co2``: CO2 ice, V_frag = 10 V_stick with T_vis,CO2(R1) = 1e-11 s (R1/1 um)^1.11
+  (Section 5.3) and the CO2 constants of Section 3.
+
+V_stick is that of two identical monomers of radius ``monomer_radius``, with k = 0.01.
+Each (ice, monomer radius) is computed once and mapped onto the grid, so an updater on a grid of
+1000 cells costs microseconds a call. ``width`` (K) replaces the steps at the snow lines by
+smooth transitions (tanh, in log V_frag) over that width.
+
+Usage with DustPy (``pip install dustpy``; it is not needed to import :mod:`stickiness`)::
+
+    from dustpy import Simulation
+    from stickiness import dustpy as sd
+    sim = Simulation()
+    sim.initialize()
+    sd.set_vfrag(sim, monomer_radius=1e-7)      # sim.dust.v.frag now follows sim.gas.T
+    sim.run()
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Callable, Dict, Optional, Tuple, Union
+
+import numpy as np
+
+from . import Material, v_frag
+
+#: Temperature (K) above which the monomers are bare refractory grains: the H2O snow line,
+#: 150 K (the condensation temperature of water ice in protoplanetary discs; Lecar et al. 2006).
+T_H2O = 150.0
+#: Temperature (K) below which the monomers are coated with CO2 ice: 70 K, the condensation
+#: temperature of CO2 ice quoted by Arakawa & Krijt (2021, Section 1) after Okuzumi et al. (2016).
+T_CO2 = 70.0
+#: Centimetres per metre: V_frag leaves here in cm/s, DustPy's unit.
+CM_PER_M = 100.0
+
+#: The ices and how their V_frag is computed: (material, T_vis size law).
+_ICES: Dict[str, Tuple[Callable[[], Material], str]] = {
+    "h2o": (Material.h2o, "h2o"),
+    "co2": (Material.co2, "co2"),
+}
+
+
+class VFragProfile:
+    """V_frag (cm/s) against temperature for monomers of ``monomer_radius`` (m).
+
+    A callable: ``profile(T)`` with T in K (an array, such as DustPy's ``sim.gas.T``) gives
+    V_frag in cm/s of the same shape. ``monomer_radius`` is one radius or one per cell (an array
+    of the shape of T). The V_frag of each (ice, radius) is computed once, on first use.
+    """
+
+    def __init__(
+        self,
+        monomer_radius: Union[float, np.ndarray] = 1e-7,
+        t_h2o: float = T_H2O,
+        t_co2: float = T_CO2,
+        v_frag_refractory: float = 1.0,
+        width: Optional[float] = None,
+    ) -> None:
+        radius = np.asarray(monomer_radius, dtype=np.float64)
+        if not np.all(np.isfinite(radius) & (radius > 0)):
+            raise ValueError(f"monomer_radius = {monomer_radius!r}: must be > 0 and finite (m)")
+        for name, value in (("t_h2o", t_h2o), ("t_co2", t_co2)):
+            if not (math.isfinite(value) and value > 0):
+                raise ValueError(f"{name} = {value!r}: must be > 0 and finite (K)")
+        if not t_co2 < t_h2o:
+            raise ValueError(f"t_co2 = {t_co2!r} K must be below t_h2o = {t_h2o!r} K")
+        if not (math.isfinite(v_frag_refractory) and v_frag_refractory > 0):
+            raise ValueError(
+                f"v_frag_refractory = {v_frag_refractory!r}: must be > 0 and finite (m/s)"
+            )
+        if width is not None and not (math.isfinite(width) and width > 0):
+            raise ValueError(f"width = {width!r}: must be > 0 and finite (K), or None")
+        self.monomer_radius = radius
+        self.t_h2o = float(t_h2o)
+        self.t_co2 = float(t_co2)
+        self.v_frag_refractory = float(v_frag_refractory)
+        self.width = width
+        self._cache: Dict[Tuple[str, float], float] = {}
+
+    def ice_v_frag(self, ice: str, radius: float) -> float:
+        """V_frag (m/s) of aggregates of ``ice`` ('h2o' or 'co2') monomers of ``radius`` (m)."""
+        key = (ice, float(radius))
+        if key not in self._cache:
+            material, law = _ICES[ice]
+            r = v_frag(material(), radius=float(radius), t_vis_law=law)
+            value = float(r.v_frag)  # scalar in, scalar out
+            if not math.isfinite(value):
+                raise ValueError(
+                    f"{ice} monomers of {radius} m: no bouncing up to {r.no_bouncing_below} m/s, "
+                    "so V_frag exceeds every collision speed searched"
+                )
+            self._cache[key] = value
+        return self._cache[key]
+
+    def _zone_values(self, ice: str, shape: Tuple[int, ...]) -> np.ndarray:
+        """ln V_frag (m/s) of one ice on the grid (per distinct radius)."""
+        if self.monomer_radius.ndim == 0:
+            return np.full(shape, math.log(self.ice_v_frag(ice, float(self.monomer_radius))))
+        radius = np.broadcast_to(self.monomer_radius, shape)
+        distinct, where = np.unique(radius, return_inverse=True)
+        logs = np.log([self.ice_v_frag(ice, r) for r in distinct])
+        return logs[where.reshape(shape)]
+
+    def __call__(self, T: Any) -> np.ndarray:
+        """V_frag in cm/s at temperatures ``T`` (K)."""
+        T = np.asarray(T, dtype=np.float64)
+        if not np.all(np.isfinite(T) & (T > 0)):
+            raise ValueError("T: temperatures must be > 0 and finite (K)")
+        shape = T.shape
+        co2 = self._zone_values("co2", shape)
+        h2o = self._zone_values("h2o", shape)
+        refractory = math.log(self.v_frag_refractory)
+        if self.width is None:
+            warm = T > self.t_co2  # H2O or refractory
+            hot = T > self.t_h2o
+            log_v = np.where(hot, refractory, np.where(warm, h2o, co2))
+        else:
+            warm = 0.5 * (1.0 + np.tanh((T - self.t_co2) / self.width))
+            hot = 0.5 * (1.0 + np.tanh((T - self.t_h2o) / self.width))
+            log_v = (1.0 - warm) * co2 + warm * ((1.0 - hot) * h2o + hot * refractory)
+        return CM_PER_M * np.exp(log_v)
+
+
+def vfrag_profile(
+    T: Any,
+    monomer_radius: Union[float, np.ndarray] = 1e-7,
+    t_h2o: float = T_H2O,
+    t_co2: float = T_CO2,
+    v_frag_refractory: float = 1.0,
+    width: Optional[float] = None,
+) -> np.ndarray:
+    """V_frag IN cm/s at temperatures ``T`` (K) for monomers of ``monomer_radius`` (m).
+
+    See the module documentation for the zones; ``v_frag_refractory`` is in m/s (the output is
+    100 times it where T > t_h2o).
+    """
+    return VFragProfile(monomer_radius, t_h2o, t_co2, v_frag_refractory, width)(T)
+
+
+def set_vfrag(
+    sim: Any,
+    monomer_radius: Union[float, np.ndarray] = 1e-7,
+    t_h2o: float = T_H2O,
+    t_co2: float = T_CO2,
+    v_frag_refractory: float = 1.0,
+    width: Optional[float] = None,
+) -> VFragProfile:
+    """Installs an updater on ``sim.dust.v.frag`` (an initialised DustPy Simulation) so that it
+    follows ``sim.gas.T`` (in cm/s), and applies it at once. Returns the profile it uses."""
+    frag = getattr(getattr(getattr(sim, "dust", None), "v", None), "frag", None)
+    if frag is None:
+        raise ValueError("sim.dust.v.frag does not exist yet: call sim.initialize() first")
+    profile = VFragProfile(monomer_radius, t_h2o, t_co2, v_frag_refractory, width)
+
+    def updater(s: Any) -> np.ndarray:
+        return profile(s.gas.T)
+
+    frag.updater = updater
+    frag.update()
+    return profile

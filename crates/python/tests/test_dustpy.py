@@ -1,0 +1,96 @@
+"""stickiness.dustpy with the real DustPy (installed by `cargo xtask test`; never skipped)."""
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+import stickiness as st
+from stickiness import dustpy as sd
+
+
+def test_zones_and_the_factor_100():
+    T = np.array([300.0, sd.T_H2O + 1e-9, sd.T_H2O, 100.0, sd.T_CO2, 20.0])
+    v = sd.vfrag_profile(T, monomer_radius=1e-7, v_frag_refractory=1.0)
+    # refractory: the user's 1 m/s, in cm/s
+    assert v[0] == 100.0 and v[1] == 100.0
+    # H2O ice at and below the H2O line, CO2 ice at and below the CO2 line (Section 5.3 laws)
+    h2o = st.v_frag(st.Material.h2o(), radius=1e-7, t_vis_law="h2o").v_frag
+    co2 = st.v_frag(st.Material.co2(), radius=1e-7, t_vis_law="co2").v_frag
+    assert math.isclose(v[2], 100 * h2o, rel_tol=1e-15) and v[3] == v[2]
+    assert math.isclose(v[4], 100 * co2, rel_tol=1e-15) and v[5] == v[4]
+
+
+def test_per_cell_radius_and_smooth_transitions():
+    T = np.array([200.0, 100.0, 50.0, 40.0])
+    radius = np.array([1e-7, 1e-6, 1e-7, 1e-6])
+    v = sd.vfrag_profile(T, monomer_radius=radius)
+    for Ti, ri, vi in zip(T, radius, v):
+        assert vi == sd.vfrag_profile(np.array([Ti]), monomer_radius=ri)[0]
+    T = np.linspace(40.0, 250.0, 400)
+    smooth = sd.vfrag_profile(T, width=5.0)
+    step = sd.vfrag_profile(T)
+    far = (np.abs(T - sd.T_H2O) > 40) & (np.abs(T - sd.T_CO2) > 40)
+    np.testing.assert_allclose(smooth[far], step[far], rtol=1e-6)
+    assert np.all(np.isfinite(smooth)) and np.all(smooth > 0)
+    with pytest.raises(ValueError, match="t_co2"):
+        sd.vfrag_profile(T, t_h2o=50.0, t_co2=70.0)
+    with pytest.raises(ValueError, match="monomer_radius"):
+        sd.vfrag_profile(T, monomer_radius=-1.0)
+
+
+def test_importing_stickiness_needs_no_dustpy():
+    code = "import sys; sys.modules['dustpy'] = None; import stickiness, stickiness.dustpy; print('ok')"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert out.stdout.strip() == "ok", out.stderr
+
+
+def small_sim():
+    from dustpy import Simulation
+
+    sim = Simulation()
+    sim.ini.grid.Nr = 30
+    sim.ini.grid.mmax = 1e3
+    sim.initialize()
+    sim.writer = None
+    sim.verbosity = 0
+    return sim
+
+
+def test_dustpy_follows_the_temperature():
+    sim = small_sim()
+    profile = sd.set_vfrag(sim, monomer_radius=1e-7)
+    np.testing.assert_array_equal(np.asarray(sim.dust.v.frag), sd.vfrag_profile(sim.gas.T))
+    sim.update()
+    np.testing.assert_array_equal(np.asarray(sim.dust.v.frag), profile(sim.gas.T))
+    # the zones move with the temperature: a disc twice as hot
+    sim.gas.T.updater = lambda s: 2.0 * np.asarray(s.gas.T)
+    sim.gas.T.update()
+    sim.dust.v.frag.update()
+    np.testing.assert_array_equal(np.asarray(sim.dust.v.frag), sd.vfrag_profile(np.asarray(sim.gas.T)))
+    assert len(np.unique(np.asarray(sim.dust.v.frag))) == 3  # refractory, H2O, CO2
+
+
+def test_a_short_run_stays_finite():
+    from dustpy import constants as c
+
+    sim = small_sim()
+    sd.set_vfrag(sim, monomer_radius=1e-7)
+    sim.t.snapshots = np.array([20.0]) * c.year
+    sim.run()
+    for field in (sim.dust.Sigma, sim.dust.v.frag, sim.gas.Sigma):
+        assert np.all(np.isfinite(np.asarray(field)))
+    assert np.all(np.asarray(sim.dust.Sigma) >= 0)
+
+
+def test_snowlines_example_runs(tmp_path, root):
+    out = tmp_path / "snow.png"
+    done = subprocess.run(
+        [sys.executable, str(root / "examples" / "dustpy" / "snowlines.py"), "--years", "10",
+         "--out", str(out)],
+        capture_output=True, text=True, cwd=tmp_path, timeout=900,
+    )
+    assert done.returncode == 0, done.stderr
+    assert out.stat().st_size > 10_000
