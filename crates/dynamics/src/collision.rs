@@ -36,14 +36,48 @@ pub const EPS: f64 = 0.01;
 /// within a few steps.
 pub const H0: f64 = 1e-6;
 
-/// Which stiff integrator of diffsol to use.
+/// Which integrator of diffsol to use.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Method {
-    /// Variable-order BDF (NDF) method.
+    /// The explicit [`Method::Tsit45`] where the collision is not stiff, BDF where it is: Tsit45
+    /// first when lambda <= [`AUTO_EXPLICIT_LAMBDA_MAX`] and no trajectory is recorded, started
+    /// again with BDF if it takes more than [`auto_explicit_step_budget`] steps or fails. The
+    /// outcome is the collision's at the tolerance asked for either way (`docs/performance.md`,
+    /// "Integrator").
     #[default]
+    Auto,
+    /// Variable-order BDF (NDF) method (stiff).
     Bdf,
-    /// ESDIRK34 singly-diagonally-implicit Runge-Kutta method.
+    /// ESDIRK34 singly-diagonally-implicit Runge-Kutta method (stiff).
     Esdirk34,
+    /// Tsitouras 5(4) explicit Runge-Kutta method: fewest steps where the crack moves slowly
+    /// (lambda up to about 30), and very many where it is stiff (small T_vis, fast impacts).
+    Tsit45,
+}
+
+/// [`Method::Auto`] tries the explicit Tsit45 first when lambda (the crack-speed ratio, see
+/// [`crate::model`]) is at most this. Measured near the thresholds (CO2 and H2O, T_vis =
+/// 1e-12..1e-8 s): Tsit45 takes 0.3-0.75 of BDF's steps for lambda <= 60 at about 1.3 times
+/// BDF's cost a step, and more steps than BDF from lambda of about 100 on.
+pub const AUTO_EXPLICIT_LAMBDA_MAX: f64 = 30.0;
+
+/// Steps after which [`Method::Auto`] abandons Tsit45 for BDF, at rtol = 1e-8: 1.5 times the
+/// most Tsit45 takes near the thresholds where [`AUTO_EXPLICIT_LAMBDA_MAX`] lets it run (340),
+/// so that a collision too stiff for it (a fast impact) wastes less than one BDF collision.
+pub const AUTO_EXPLICIT_STEPS_AT_RTOL_1E8: f64 = 500.0;
+
+/// [`Method::Auto`] runs Tsit45 at this fraction of the tolerance asked for: at equal rtol it
+/// moves the thresholds up to about twice as far as BDF (3.6e-7 against 2.0e-7 at rtol 1e-8,
+/// `cargo run --release -p thresholds --example tolerance_ladder`); at a tenth of it, less
+/// than BDF does (4e-8 at 1e-9), still in fewer steps than BDF at rtol.
+pub const AUTO_EXPLICIT_RTOL_FACTOR: f64 = 0.1;
+
+/// The step budget of the explicit attempt of [`Method::Auto`] at relative tolerance `rtol`:
+/// [`AUTO_EXPLICIT_STEPS_AT_RTOL_1E8`] scaled as the steps of a fifth-order method,
+/// `rtol^(-1/5)`, and at least 50.
+pub fn auto_explicit_step_budget(rtol: f64) -> usize {
+    // float -> usize saturates; the value is finite and positive for valid rtol
+    (AUTO_EXPLICIT_STEPS_AT_RTOL_1E8 * (1e-8 / rtol).powf(0.2)).max(50.0) as usize
 }
 
 /// Which dense linear algebra diffsol uses for the 4 x 4 Newton systems.
@@ -59,7 +93,8 @@ pub enum Backend {
 /// Numerical settings of a collision integration (dimensionless unless stated).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SolverOptions {
-    /// Integrator. Default BDF: measured faster than ESDIRK34 here, and the two agree.
+    /// Integrator. Default [`Method::Auto`]: explicit where the collision is not stiff, BDF
+    /// where it is (BDF measured faster than ESDIRK34 here; all agree to the tolerance).
     pub method: Method,
     /// Linear algebra of the Newton iterations. Default nalgebra: twice as fast as faer on a
     /// 4 x 4 system (`docs/performance.md`).
@@ -121,7 +156,7 @@ impl SolverOptions {
 impl Default for SolverOptions {
     fn default() -> Self {
         Self {
-            method: Method::Bdf,
+            method: Method::Auto,
             backend: Backend::Nalgebra,
             rtol: 1e-9,
             atol: 1e-12,
@@ -203,8 +238,10 @@ pub struct Collision {
     /// Largest beta reached at a solver step (dimensionless): for a sticking collision, how close the
     /// contact came to its end at beta = (1 - eps)/k.
     pub beta_max: f64,
-    /// Solver steps taken.
+    /// Solver steps taken (by `method`).
     pub steps: usize,
+    /// The integrator that decided the outcome ([`Method::Auto`] resolved: Tsit45 or BDF).
+    pub method: Method,
     /// Trajectory, when [`SolverOptions::record_trajectory`] is set.
     pub trajectory: Vec<TrajectoryPoint>,
 }
@@ -399,18 +436,47 @@ impl Collider {
                 // of the JKR fold would abort after 50. Recovered failures are normal; the step
                 // budget bounds the work.
                 problem.ode_options.max_nonlinear_solver_failures = opts.max_steps;
-                match opts.method {
-                    Method::Bdf => {
-                        let mut solver = problem
-                            .bdf::<$lu>()
-                            .map_err(|e| self.solver_error(v_in, e))?;
-                        self.run(&mut solver, v_in)
+                let method = match opts.method {
+                    Method::Auto
+                        if self.params.lambda <= AUTO_EXPLICIT_LAMBDA_MAX
+                            && !opts.record_trajectory =>
+                    {
+                        let rtol = AUTO_EXPLICIT_RTOL_FACTOR * opts.rtol;
+                        let atol = problem.atol.clone();
+                        problem.rtol = rtol;
+                        problem.atol *= diffsol::Scale(AUTO_EXPLICIT_RTOL_FACTOR);
+                        let explicit = problem.tsit45().ok().map(|mut solver| {
+                            let budget = auto_explicit_step_budget(rtol).min(opts.max_steps);
+                            self.run(&mut solver, v_in, budget, Method::Tsit45)
+                        });
+                        problem.rtol = opts.rtol;
+                        problem.atol = atol;
+                        // within budget: done; over budget or failed: stiff here, BDF below
+                        if let Some(Ok(c)) = explicit {
+                            return Ok(c);
+                        }
+                        Method::Bdf
                     }
+                    Method::Auto => Method::Bdf,
+                    m => m,
+                };
+                match method {
                     Method::Esdirk34 => {
                         let mut solver = problem
                             .esdirk34::<$lu>()
                             .map_err(|e| self.solver_error(v_in, e))?;
-                        self.run(&mut solver, v_in)
+                        self.run(&mut solver, v_in, opts.max_steps, method)
+                    }
+                    Method::Tsit45 => {
+                        let mut solver =
+                            problem.tsit45().map_err(|e| self.solver_error(v_in, e))?;
+                        self.run(&mut solver, v_in, opts.max_steps, method)
+                    }
+                    Method::Auto | Method::Bdf => {
+                        let mut solver = problem
+                            .bdf::<$lu>()
+                            .map_err(|e| self.solver_error(v_in, e))?;
+                        self.run(&mut solver, v_in, opts.max_steps, Method::Bdf)
                     }
                 }
             }};
@@ -457,7 +523,14 @@ impl Collider {
         }
     }
 
-    fn run<'s, Eqn, S>(&self, solver: &mut S, v_in: f64) -> Result<Collision, DynamicsError>
+    /// Steps `solver` (of kind `method`) until the outcome is decided, at most `max_steps` steps.
+    fn run<'s, Eqn, S>(
+        &self,
+        solver: &mut S,
+        v_in: f64,
+        max_steps: usize,
+        method: Method,
+    ) -> Result<Collision, DynamicsError>
     where
         Eqn: OdeEquations<T = f64> + 's,
         S: OdeSolverMethod<'s, Eqn>,
@@ -484,7 +557,7 @@ impl Collider {
         if opts.record_trajectory {
             trajectory.push(self.point(&u));
         }
-        for step in 1..=opts.max_steps {
+        for step in 1..=max_steps {
             let reason = solver
                 .step()
                 .map_err(|e| self.solver_error_at(v_in, &u, e))?;
@@ -515,6 +588,7 @@ impl Collider {
                     max_energy_increase: max_increase * self.scales.e0,
                     beta_max: self.beta_end,
                     steps: step,
+                    method,
                     trajectory,
                 });
             }
@@ -550,6 +624,7 @@ impl Collider {
                     max_energy_increase: max_increase * self.scales.e0,
                     beta_max,
                     steps: step,
+                    method,
                     trajectory,
                 });
             }
@@ -558,7 +633,7 @@ impl Collider {
             geometry: *self.contact.geometry(),
             t_vis: self.t_vis,
             v_in,
-            steps: opts.max_steps,
+            steps: max_steps,
         })
     }
 }

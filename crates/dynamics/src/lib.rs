@@ -26,7 +26,8 @@
 //! t = 0: delta = 0, delta_dot = V_in, beta = (1 + eps) k;  end: beta = (1 - eps)/k, eps = 0.01   (Sec. 2.6)
 //! e = -V_out / V_in                                                (Sec. 4.4)
 //! ```
-//! integrated with diffsol's stiff solvers (BDF or ESDIRK34, analytic Jacobian) in the
+//! integrated with diffsol (by default its explicit Tsit45 where the collision is not stiff and
+//! its BDF method, with the analytic Jacobian, where it is: [`Method::Auto`]) in the
 //! nondimensional variables and pseudo-time described in [`model`]. Sticking is decided by the
 //! energy bound and oscillation criteria described in [`collision`].
 
@@ -36,8 +37,9 @@ pub mod model;
 pub mod scales;
 
 pub use collision::{
-    Backend, Collider, Collision, Method, Outcome, SolverOptions, StickingCriterion,
-    TrajectoryPoint, EPS, H0,
+    auto_explicit_step_budget, Backend, Collider, Collision, Method, Outcome, SolverOptions,
+    StickingCriterion, TrajectoryPoint, AUTO_EXPLICIT_LAMBDA_MAX, AUTO_EXPLICIT_RTOL_FACTOR,
+    AUTO_EXPLICIT_STEPS_AT_RTOL_1E8, EPS, H0,
 };
 pub use error::DynamicsError;
 pub use scales::Scales;

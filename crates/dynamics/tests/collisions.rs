@@ -194,6 +194,47 @@ fn solvers_agree_and_converge() {
     }
 }
 
+/// `Method::Auto` integrates non-stiff collisions (small lambda) with Tsit45 and stiff ones with
+/// BDF, and agrees with BDF (an independent integrator) to its tolerance: e within 1e-6
+/// relative at rtol 1e-9. A fast impact too stiff for Tsit45 falls back to BDF.
+#[test]
+fn auto_method_picks_the_integrator_and_agrees_with_bdf() {
+    let law = law();
+    let run = |t_vis: f64, v_in: f64, method: Method| {
+        let opts = SolverOptions {
+            method,
+            ..Default::default()
+        };
+        Collider::new(co2_60um(), &law, t_vis)
+            .unwrap()
+            .with_options(opts)
+            .unwrap()
+            .collide(v_in)
+            .unwrap()
+    };
+    // (T_vis, V_in, integrator expected): lambda = 1.3 and 13 (explicit), 1.3e5 (stiff); and
+    // 100 m/s at T_vis = 1e-9 s, about 6000 V_stick,JKR, where the contact itself is stiff
+    for (t_vis, v_in, expected) in [
+        (1e-9, 0.035, Method::Tsit45),
+        (1e-9, 0.045, Method::Tsit45),
+        (1e-10, 0.03, Method::Tsit45),
+        (1e-14, 0.02, Method::Bdf),
+        (1e-9, 100.0, Method::Bdf),
+    ] {
+        let auto = run(t_vis, v_in, Method::Auto);
+        let bdf = run(t_vis, v_in, Method::Bdf);
+        assert_eq!(auto.method, expected, "T_vis {t_vis} V {v_in}");
+        assert_eq!(bdf.method, Method::Bdf);
+        assert_eq!(auto.outcome, bdf.outcome, "T_vis {t_vis} V {v_in}");
+        assert!(
+            (auto.e - bdf.e).abs() <= 1e-6 * bdf.e.abs(),
+            "T_vis {t_vis} V {v_in}: {} vs {}",
+            auto.e,
+            bdf.e
+        );
+    }
+}
+
 /// Sticking is proved by the energy bound when damping is strong; for weak damping the
 /// oscillation criterion decides.
 #[test]
