@@ -1,6 +1,7 @@
 //! V_stick searches (both transitions, relative tolerance 1e-6) for the three reference cases of
-//! the Speed issue, and a Figure-4-like sweep (2 k x 11 T_vis, each search seeded by its
-//! neighbour). `cargo bench -p thresholds`.
+//! the Speed issue, one of them with its crack-law table (as a Python call does), and a
+//! Figure-4-like sweep (2 k x 11 T_vis, each search seeded by its neighbour).
+//! `cargo bench -p thresholds`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
@@ -26,6 +27,14 @@ fn v_stick(c: &mut Criterion) {
             b.iter(|| sticking_thresholds(&contact, &law, black_box(t_vis), &opts))
         });
     }
+    // what one call from Python does: its own crack-law table, then the search (the Python
+    // overhead in docs/performance.md is measured against this)
+    group.bench_function("co2_60um_1e-9_with_table", |b| {
+        b.iter(|| {
+            let law = CrackLaw::new(0.01).expect("k in range");
+            sticking_thresholds(&co2, &law, black_box(1e-9), &opts)
+        })
+    });
     group.sample_size(10);
     let t_vis: Vec<f64> = (0..11)
         .map(|i| 1e-12 * 10f64.powf(i as f64 * 0.4))

@@ -33,9 +33,10 @@
 //! for its uncertainty (Sections 5.1-5.2).
 //!
 //! ## Map
-//! - [`stick`]: [`sticking_thresholds`] (V_stick and the onset of double collisions) by
-//!   bracketing, regula falsi and bisection, capped at `v_max`; [`sweep_t_vis`] chains searches
-//!   over T_vis with hints from the neighbours.
+//! - [`stick`]: [`sticking_thresholds`] (V_stick and the onset of double collisions): a
+//!   bracket, secant steps on V_out for V_stick and trisection for the onset, on a ladder of
+//!   solver tolerances that ends at the search's own, capped at `v_max`; [`sweep_t_vis`] chains
+//!   searches over T_vis with hints from the neighbours.
 //! - [`fit`]: [`fit_t_vis`], the inverse problem.
 //! - [`laws`]: [`TVisLaw`], [`v_frag`] and [`fragmentation`].
 //! - [`sweep`]: grids of searches in chunks that keep their hints, shared by the CLI and the
@@ -49,13 +50,14 @@ pub mod sweep;
 
 pub use contact::{Contact, ContactError, Geometry, Material, Warning};
 pub use dynamics::{
-    Collider, Collision, DynamicsError, Outcome, SolverOptions, StickingCriterion, TrajectoryPoint,
+    Collider, Collision, DynamicsError, Method, Outcome, SolverOptions, StickingCriterion,
+    TrajectoryPoint,
 };
 pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
 pub use greenwood::{CrackLaw, GreenwoodError, OutOfRange};
 pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
 pub use stick::{
-    sticking_thresholds, sweep_t_vis, Hint, SearchOptions, StickingThresholds,
+    neighbours, sticking_thresholds, sweep_t_vis, Hint, SearchOptions, StickingThresholds,
     DEFAULT_V_MAX_OVER_JKR, V_SEARCH_LIMIT,
 };

@@ -6,13 +6,23 @@
 //! (2.6 % of V_stick at T_vis = 1e-9 s, 4e-6 at 1e-14 s), so each transition is searched on its
 //! own predicate ("not sticking", "bouncing") from one shared set of classified speeds.
 //!
+//! Collisions are integrated on a ladder of solver tolerances ([`LADDER`]): while a bracket is
+//! wide, a coarse collision (a quarter to a third of the cost of one at the search's own
+//! tolerance) classifies a speed as well as a tight one; the final brackets of both transitions
+//! are made of collisions at the search's own tolerance only.
+//!
 //! The search has three stages:
-//! 1. [`Search::bracket`]: a sticking speed below and a bouncing speed above, starting just below
-//!    V_stick,JKR (V_stick >= V_stick,JKR) or around a hint from a neighbouring sweep point;
+//! 1. [`Search::bracket_stage`]: a sticking speed below and a bouncing speed above, on the
+//!    coarsest rung, starting just below V_stick,JKR (V_stick >= V_stick,JKR) or around a hint
+//!    from a neighbouring sweep point;
 //! 2. [`Search::refine`]: V_out is continuous through V_stick (positive for double collisions,
-//!    negative for bouncing), so V_stick is found by regula falsi on V_out(V_in); the onset is a
-//!    jump of the outcome (e from 0 to about -0.1), so it is bisected;
-//! 3. [`Search::result`]: each threshold is the centre of its final bracket.
+//!    negative for bouncing), so V_stick is a root of V_out: coarse secant steps estimate it, and
+//!    two pairs of full-tolerance collisions around the estimate close its bracket. The onset is a
+//!    jump of the outcome (e from 0 to about -0.1), so it is trisected, on coarse rungs while
+//!    the bracket is wide;
+//! 3. [`Search::result`]: V_stick is the zero of V_out between the ends of its final bracket
+//!    (accurate to the solver's tolerance, well inside the bracket), the onset the centre of its
+//!    final bracket.
 //!
 //! Each round integrates two impact speeds, on two threads when asked; the speeds depend only on
 //! the outcomes seen, so the result does not depend on the threads.
@@ -37,11 +47,12 @@ const FIRST_LOWER_OVER_JKR: f64 = 0.99;
 /// First upper trial, in units of the first lower one: V_stick is within 1.6 V_stick,JKR for
 /// T_vis up to about 1e-10 s (Figure 4), so one round often brackets it.
 const FIRST_UPPER_OVER_LOWER: f64 = 1.6;
-/// A hinted search first tries 2 % below the neighbour's onset and 2 % above its V_stick:
-/// neighbours of a sweep grid of 8 points a decade differ by less.
-const HINT_BELOW: f64 = 0.98;
+/// A hinted search first tries 10 % below the hinted onset and 10 % above the hinted V_stick,
+/// on the coarsest rung: wide enough to bracket both transitions when the hint, extrapolated
+/// from two neighbours, is a few per cent off, and cheap there.
+const HINT_BELOW: f64 = 0.9;
 /// See [`HINT_BELOW`].
-const HINT_ABOVE: f64 = 1.02;
+const HINT_ABOVE: f64 = 1.1;
 /// Growth of the upper trial per step while nothing bounces: 1.5 keeps the bracket of V_out
 /// tight enough for regula falsi while reaching 1000 V_stick,JKR in 9 rounds.
 const UPPER_GROWTH: f64 = 1.5;
@@ -79,10 +90,44 @@ pub struct Hint {
     pub v_stick: f64,
 }
 
+/// The most a hint extrapolated from two neighbours moves from the nearer one (a factor): the
+/// thresholds of neighbouring points of a sweep seldom differ by more, and a wild extrapolation
+/// would cost more than no hint.
+const HINT_EXTRAPOLATION_MAX: f64 = 2.0;
+
+impl Hint {
+    /// The hint for a search at `t_vis` (s) from the thresholds of the points before it in a
+    /// sweep, `previous` (the last one or two, as `(t_vis, hint)` in sweep order): the nearer
+    /// one's thresholds, moved along the trend of the two in ln T_vis (by at most a factor
+    /// [`HINT_EXTRAPOLATION_MAX`]).
+    pub fn extrapolated(t_vis: f64, previous: &[(f64, Hint)]) -> Option<Hint> {
+        match previous {
+            [] => None,
+            [.., (t0, h0), (t1, h1)] if *t0 > 0.0 && *t1 > 0.0 && t_vis > 0.0 && t0 != t1 => {
+                let s = (t_vis / t1).ln() / (t1 / t0).ln();
+                let step = |x1: f64, x0: f64| {
+                    let f = (x1 / x0).powf(s);
+                    if f.is_finite() {
+                        x1 * f.clamp(1.0 / HINT_EXTRAPOLATION_MAX, HINT_EXTRAPOLATION_MAX)
+                    } else {
+                        x1
+                    }
+                };
+                Some(Hint {
+                    v_double_onset: step(h1.v_double_onset, h0.v_double_onset),
+                    v_stick: step(h1.v_stick, h0.v_stick),
+                })
+            }
+            [.., (_, h)] => Some(*h),
+        }
+    }
+}
+
 impl SearchOptions {
     /// Collision settings for threshold searches: relative tolerance 1e-8 (absolute 1e-11), which
-    /// moves V_stick and V_double_onset by less than 5e-8 relative from a 1e-11 reference
-    /// (`docs/performance.md`), well inside the bracket tolerance of 1e-6.
+    /// moves V_stick and V_double_onset by at most 2e-7 relative from a BDF reference at rtol
+    /// 1e-11 (CO2 and H2O, T_vis = 1e-14..1e-8 s; `docs/performance.md`, "Tolerance ladder"),
+    /// inside the bracket tolerance of 1e-6.
     pub fn default_solver() -> SolverOptions {
         SolverOptions {
             rtol: 1e-8,
@@ -161,51 +206,54 @@ impl StickingThresholds {
     }
 }
 
-/// Every classified impact speed with its outcome and V_out.
-#[derive(Debug, Default)]
+/// The coarse solver tolerances of a search, coarsest first: `(rtol, shift)`, where `shift`
+/// bounds how far that tolerance moves the transitions (relative to V_in) from a tight reference.
+/// The shifts measured over CO2 and H2O at T_vis = 1e-14..1e-8 s (`docs/performance.md`,
+/// "Tolerance ladder") are 1.1e-3, 7.4e-5 and 1.4e-6; each bound here is 1.8 times that or more. The
+/// last rung, the search's own solver settings, is exact by definition.
+const LADDER: [(f64, f64); 3] = [(1e-4, 2e-3), (1e-5, 1.5e-4), (1e-7, 3e-6)];
+
+/// A rung of [`LADDER`] classifies impact speeds only while the bracket it refines is wider
+/// than this many times its shift: a misclassified speed then lies near the bracket's far end,
+/// where the final check at full tolerance finds it.
+const LADDER_MARGIN: f64 = 4.0;
+
+/// The rung of the coarse secant steps on V_out: 1e-5, a third of the cost of full tolerance,
+/// and V_out accurate to about 1e-5.
+const COARSE_SECANT_RUNG: usize = 1;
+/// Coarse steps on V_out at most (bisection until two speeds have a V_out, then secant),
+/// before the full-tolerance pairs take over: a bisection from a factor 1.5 down to the first
+/// pair's width takes 13.
+const MAX_COARSE_SECANT_STEPS: usize = 24;
+/// A coarse secant estimate has settled when it moves by less than this (relative): the
+/// transitions move by about 1e-5 on the coarse rung, so finer steps there are noise.
+const SECANT_SETTLED: f64 = 3e-5;
+/// Each coarse secant step also integrates a speed this much above its estimate (relative), so
+/// that the next step has a secant through two close speeds.
+const SECANT_PROBE: f64 = 1e-3;
+/// Half-width (relative) of the first full-tolerance pair around a coarse estimate: twice the
+/// largest shift of the coarse rung measured (7e-5), so that the pair straddles V_stick.
+const TIGHT_PAIR_HALF_WIDTH: f64 = 1.5e-4;
+
+/// Absolute tolerance of a rung, relative to its rtol (the states are of order one).
+const ATOL_OVER_RTOL: f64 = 1e-3;
+
+/// One classified impact speed.
+#[derive(Debug, Clone, Copy)]
 struct Seen {
-    points: Vec<(f64, Outcome, f64)>,
+    /// Impact speed (m/s).
+    v: f64,
+    outcome: Outcome,
+    /// V_out (m/s).
+    v_out: f64,
+    /// The rung of the tolerance ladder it was integrated on ([`LADDER`]`.len()` is the
+    /// search's own solver settings).
+    rung: usize,
 }
 
 /// A transition between two classes of outcomes: the fastest speed below it and the slowest
-/// above it seen so far (m/s).
-type Bracket = (Option<f64>, Option<f64>);
-
-impl Seen {
-    fn record(&mut self, v: f64, outcome: Outcome, v_out: f64) {
-        self.points.push((v, outcome, v_out));
-    }
-
-    /// V_out at a recorded speed.
-    fn v_out_at(&self, v: f64) -> Option<f64> {
-        self.points.iter().find(|p| p.0 == v).map(|p| p.2)
-    }
-
-    /// Smallest speed with `is_above`, and the largest speed below it without.
-    fn bracket(&self, is_above: impl Fn(Outcome) -> bool) -> Bracket {
-        let hi = self
-            .points
-            .iter()
-            .filter(|p| is_above(p.1))
-            .map(|p| p.0)
-            .reduce(f64::min);
-        let lo = self
-            .points
-            .iter()
-            .filter(|p| !is_above(p.1) && hi.is_none_or(|h| p.0 < h))
-            .map(|p| p.0)
-            .reduce(f64::max);
-        (lo, hi)
-    }
-
-    fn has(&self, outcome: impl Fn(Outcome) -> bool) -> bool {
-        self.points.iter().any(|p| outcome(p.1))
-    }
-
-    fn fastest(&self) -> f64 {
-        self.points.iter().map(|p| p.0).fold(0.0, f64::max)
-    }
-}
+/// above it seen so far.
+type Bracket = (Option<Seen>, Option<Seen>);
 
 fn sticks(o: Outcome) -> bool {
     o == Outcome::Sticking
@@ -219,33 +267,121 @@ fn bouncing(o: Outcome) -> bool {
     o == Outcome::Bouncing
 }
 
-/// One threshold search: the collider, its settings, and every speed classified so far.
+/// One threshold search: colliders for each rung, its settings, and every classified speed.
 struct Search<'a> {
-    collider: Collider,
+    /// One collider a rung of [`LADDER`], then one with the search's own solver settings.
+    colliders: Vec<Collider>,
     opts: &'a SearchOptions,
     v_jkr: f64,
     v_max: f64,
-    seen: Seen,
+    seen: Vec<Seen>,
+    /// The state of the V_stick search.
+    stick: StickState,
+}
+
+/// The two speeds that cut `[lo, hi]` in thirds, on `rung`.
+fn trisect(lo: f64, hi: f64, rung: usize) -> Vec<(f64, usize)> {
+    let third = (hi - lo) / 3.0;
+    vec![(lo + third, rung), (lo + 2.0 * third, rung)]
+}
+
+/// Where the V_stick search stands.
+#[derive(Debug, Clone, Copy)]
+struct StickState {
+    /// The coarse estimate has stopped moving.
+    settled: bool,
+    /// The latest coarse estimate (m/s).
+    estimate: Option<f64>,
+    /// Coarse steps taken.
+    coarse_steps: usize,
+    /// Relative half-width of the next full-tolerance pair.
+    half_width: f64,
 }
 
 impl Search<'_> {
-    /// Integrates two impact speeds (concurrently when asked) and records their outcomes.
-    fn round(&mut self, speeds: [f64; 2]) -> Result<(), ThresholdsError> {
-        let one = |v: f64| self.collider.collide(v);
-        let (a, b) = if self.opts.parallel {
-            rayon::join(|| one(speeds[0]), || one(speeds[1]))
-        } else {
-            (one(speeds[0]), one(speeds[1]))
+    /// The finest rung.
+    fn tight(&self) -> usize {
+        LADDER.len()
+    }
+
+    /// The coarsest rung fit to classify speeds inside a bracket of relative width `width`.
+    fn rung_for(&self, width: f64) -> usize {
+        LADDER
+            .iter()
+            .position(|&(rtol, shift)| {
+                width > LADDER_MARGIN * shift && rtol > self.opts.solver.rtol
+            })
+            .unwrap_or(self.tight())
+    }
+
+    /// The speeds seen, each by its finest classification, without the coarse ones that a finer
+    /// one contradicts (outcomes come in the order sticking, double, bouncing along V_in).
+    fn trusted(&self) -> Vec<Seen> {
+        let rank = |o: Outcome| match o {
+            Outcome::Sticking => 0,
+            Outcome::DoubleCollision => 1,
+            Outcome::Bouncing => 2,
         };
-        for (v, c) in speeds.into_iter().zip([a?, b?]) {
-            self.seen.record(v, c.outcome, c.v_out);
+        self.seen
+            .iter()
+            .filter(|p| {
+                !self.seen.iter().any(|q| {
+                    q.rung > p.rung
+                        && ((q.v == p.v)
+                            || (q.v > p.v && rank(q.outcome) < rank(p.outcome))
+                            || (q.v < p.v && rank(q.outcome) > rank(p.outcome)))
+                })
+            })
+            .copied()
+            .collect()
+    }
+
+    /// The bracket of the transition into the outcomes with `is_above`.
+    fn bracket(&self, is_above: impl Fn(Outcome) -> bool) -> Bracket {
+        let trusted = self.trusted();
+        let hi = trusted
+            .iter()
+            .filter(|p| is_above(p.outcome))
+            .min_by(|a, b| a.v.total_cmp(&b.v))
+            .copied();
+        let lo = trusted
+            .iter()
+            .filter(|p| !is_above(p.outcome) && hi.is_none_or(|h| p.v < h.v))
+            .max_by(|a, b| a.v.total_cmp(&b.v))
+            .copied();
+        (lo, hi)
+    }
+
+    fn has(&self, outcome: impl Fn(Outcome) -> bool) -> bool {
+        self.seen.iter().any(|p| outcome(p.outcome))
+    }
+
+    /// Integrates impact speeds, each on its rung, two at a time (concurrently when asked).
+    fn round(&mut self, jobs: &[(f64, usize)]) -> Result<(), ThresholdsError> {
+        let one = |(v, rung): (f64, usize)| self.colliders[rung].collide(v).map(|c| (v, rung, c));
+        let results = match jobs {
+            [a, b] if self.opts.parallel => {
+                let (x, y) = rayon::join(|| one(*a), || one(*b));
+                vec![x, y]
+            }
+            _ => jobs.iter().map(|j| one(*j)).collect(),
+        };
+        for r in results {
+            let (v, rung, c) = r?;
+            self.seen.push(Seen {
+                v,
+                outcome: c.outcome,
+                v_out: c.v_out,
+                rung,
+            });
         }
         Ok(())
     }
 
     /// Stage 1: a sticking speed below both transitions and, unless nothing bounces up to
-    /// `v_max`, a bouncing speed above them.
-    fn bracket(&mut self) -> Result<(), ThresholdsError> {
+    /// `v_max`, a bouncing speed above them, on the coarsest rung.
+    fn bracket_stage(&mut self) -> Result<(), ThresholdsError> {
+        let coarse = self.rung_for(f64::INFINITY);
         let mut v = (FIRST_LOWER_OVER_JKR * self.v_jkr).min(0.5 * self.v_max);
         let v_max = self.v_max;
         let hinted = self.opts.hint.filter(|h| {
@@ -254,115 +390,266 @@ impl Search<'_> {
                 && h.v_stick * HINT_ABOVE <= v_max
         });
         match hinted {
-            Some(h) => self.round([HINT_BELOW * h.v_double_onset, HINT_ABOVE * h.v_stick])?,
-            None => self.round([v, (FIRST_UPPER_OVER_LOWER * v).min(v_max)])?,
+            Some(h) => self.round(&[
+                (HINT_BELOW * h.v_double_onset, coarse),
+                (HINT_ABOVE * h.v_stick, coarse),
+            ])?,
+            None => self.round(&[
+                (v, coarse),
+                ((FIRST_UPPER_OVER_LOWER * v).min(v_max), coarse),
+            ])?,
         }
-        if hinted.is_some() && !self.seen.has(sticks) {
-            self.round([v, 0.5 * v])?;
+        if hinted.is_some() && !self.has(sticks) {
+            self.round(&[(v, coarse), (0.5 * v, coarse)])?;
         }
-        while !self.seen.has(sticks) {
+        while !self.has(sticks) {
             v *= LOWER_SHRINK;
             if v < V_FLOOR_OVER_JKR * self.v_jkr {
                 return Err(ThresholdsError::NoSticking {
                     v_min: v,
-                    t_vis: self.collider.t_vis(),
+                    t_vis: self.colliders[0].t_vis(),
                 });
             }
-            self.round([2.0 * v, v])?;
+            self.round(&[(2.0 * v, coarse), (v, coarse)])?;
         }
-        let mut top = self.seen.fastest();
-        while !self.seen.has(bouncing) && top < v_max {
+        let mut top = self.seen.iter().map(|p| p.v).fold(0.0, f64::max);
+        while !self.has(bouncing) && top < v_max {
             let a = (UPPER_GROWTH * top).min(v_max);
             let b = (UPPER_GROWTH * a).min(v_max);
-            self.round([a, b])?;
+            self.round(&[(a, coarse), (b, coarse)])?;
             top = b;
         }
         Ok(())
     }
 
-    /// Whether a transition's bracket is narrower than the tolerance (or there is nothing to
-    /// search, for example no bouncing below `v_max`).
-    fn converged(&self, (lo, hi): Bracket) -> bool {
-        match (lo, hi) {
-            (Some(lo), Some(hi)) => hi - lo <= self.opts.rel_tol * hi,
-            _ => true,
-        }
-    }
-
-    /// Stage 2: both transitions to the tolerance, two speeds a round.
+    /// Stage 2: V_stick, then the onset of double collisions, each to the tolerance on
+    /// full-tolerance collisions, two speeds a round (both cores busy).
     fn refine(&mut self) -> Result<(), ThresholdsError> {
-        let tol = self.opts.rel_tol;
         loop {
-            let stick = self.seen.bracket(bouncing);
-            let onset = self.seen.bracket(not_sticking);
-            let speeds = match (self.converged(stick), self.converged(onset)) {
-                (true, true) => return Ok(()),
-                (false, false) => {
-                    let p = self.regula_falsi_point(stick);
-                    let q = midpoint(onset);
-                    if (p - q).abs() > tol * p {
-                        [p, q]
-                    } else {
-                        // one bracket for both: trisect it
-                        trisect(onset.0, stick.1)
-                    }
-                }
-                (false, true) => [self.regula_falsi_point(stick), midpoint(stick)],
-                (true, false) => trisect(onset.0, onset.1),
-            };
-            self.round(speeds)?;
+            let jobs = self.stick_jobs()?;
+            if jobs.is_empty() {
+                break;
+            }
+            self.round(&jobs)?;
+        }
+        loop {
+            let jobs = self.onset_jobs();
+            if jobs.is_empty() {
+                return Ok(());
+            }
+            self.round(&jobs)?;
         }
     }
 
-    /// The regula falsi point of V_out(V_in) in the V_stick bracket when its lower end is a double
-    /// collision (V_out > 0 there, < 0 at the bouncing end), else the midpoint; kept a quarter of
-    /// the tolerance inside the bracket.
-    fn regula_falsi_point(&self, (lo, hi): Bracket) -> f64 {
-        let (lo, hi) = (lo.unwrap_or(0.0), hi.unwrap_or(0.0));
-        let f_lo = self.seen.v_out_at(lo).unwrap_or(0.0);
-        let f_hi = self.seen.v_out_at(hi).unwrap_or(0.0);
-        let v = if f_lo > 0.0 && f_hi < 0.0 {
-            (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
-        } else {
-            0.5 * (lo + hi)
+    /// The next two speeds for V_stick; none when it is done.
+    ///
+    /// V_out(V_in) is continuous through V_stick (positive for double collisions, negative for
+    /// bouncing), so V_stick is a root of V_out. Coarse collisions only estimate that root (a
+    /// coarse collision near it may be misclassified, so their outcomes are not used for the
+    /// result): secant steps on the coarse rung, safeguarded by bisection, until they move by less
+    /// than [`SECANT_SETTLED`]. Then pairs of full-tolerance collisions: around the estimate,
+    /// then a quarter of the tolerance either side of the secant root through them, which closes
+    /// the bracket; wider pairs or bisection continue at full tolerance when a pair does not
+    /// straddle V_stick.
+    fn stick_jobs(&mut self) -> Result<Vec<(f64, usize)>, ThresholdsError> {
+        if !self.has(bouncing) {
+            return Ok(Vec::new());
+        }
+        let tight = self.tight();
+        let coarse = COARSE_SECANT_RUNG;
+        if !self.stick.settled {
+            if let (Some(lo), Some(hi)) = self.bracket(bouncing) {
+                if hi.v - lo.v > TIGHT_PAIR_HALF_WIDTH * hi.v
+                    && self.stick.coarse_steps < MAX_COARSE_SECANT_STEPS
+                {
+                    // the secant root when it falls inside the bracket of every speed seen,
+                    // else the bracket's midpoint (before two speeds have a V_out, or when V_out
+                    // curves)
+                    // a neighbour's V_stick is the first estimate
+                    let hinted = self
+                        .opts
+                        .hint
+                        .map(|h| h.v_stick)
+                        .filter(|_| self.stick.estimate.is_none());
+                    let inside = |q: &f64| *q > lo.v && *q < hi.v;
+                    let root = hinted
+                        .filter(inside)
+                        .or_else(|| self.v_out_root(coarse).filter(inside))
+                        .or_else(|| self.v_out_root(0).filter(inside));
+                    let Some(p) = root else {
+                        self.stick.coarse_steps += 1;
+                        return Ok(trisect(lo.v, hi.v, coarse));
+                    };
+                    let settled = root.is_some()
+                        && self
+                            .stick
+                            .estimate
+                            .is_some_and(|e| (e - p).abs() <= SECANT_SETTLED * p);
+                    self.stick.estimate = Some(p);
+                    if !settled {
+                        self.stick.coarse_steps += 1;
+                        // a second speed a little above: a local secant next round
+                        return Ok(vec![(p, coarse), (p * (1.0 + SECANT_PROBE), coarse)]);
+                    }
+                } else {
+                    self.stick.estimate = self.stick.estimate.or(Some(0.5 * (lo.v + hi.v)));
+                }
+            }
+            self.stick.settled = true;
+        }
+        let (lo, hi) = self.tight_bracket(bouncing);
+        let eps = 0.25 * self.opts.rel_tol;
+        let half = &mut self.stick.half_width;
+        let p = match (lo, hi) {
+            (Some(lo), Some(hi)) => {
+                if hi.v - lo.v <= self.opts.rel_tol * hi.v {
+                    return Ok(Vec::new());
+                }
+                let root = self.v_out_root(tight).filter(|q| *q > lo.v && *q < hi.v);
+                match root {
+                    Some(q) => {
+                        self.stick.half_width = eps.min(0.25 * (hi.v - lo.v) / hi.v);
+                        q
+                    }
+                    // no secant (V_out is steep near V_stick in the JKR limit, and a sticking
+                    // lower end has none): trisect
+                    None => return Ok(trisect(lo.v, hi.v, tight)),
+                }
+            }
+            (Some(lo), None) => {
+                // everything at full tolerance so far is below V_stick: go up, to v_max at most
+                if lo.v >= self.v_max * (1.0 - self.opts.rel_tol) {
+                    return Ok(Vec::new());
+                }
+                *half *= 2.0;
+                lo.v * (1.0 + 2.0 * *half)
+            }
+            (None, Some(hi)) => {
+                // everything at full tolerance so far bounces: follow V_out down to its root
+                // (two bouncing speeds at full tolerance), or step down
+                *half *= 2.0;
+                let step = hi.v * (1.0 - 2.0 * *half);
+                self.v_out_root(tight)
+                    .filter(|q| *q < hi.v)
+                    .map_or(step, |q| q.max(step))
+            }
+            (None, None) => match self.stick.estimate {
+                Some(p) => p,
+                None => match self.bracket(bouncing) {
+                    (Some(lo), Some(hi)) => 0.5 * (lo.v + hi.v),
+                    _ => return Ok(Vec::new()),
+                },
+            },
         };
-        let margin = 0.25 * self.opts.rel_tol * hi;
-        v.clamp(lo + margin, hi - margin)
+        let half = self.stick.half_width;
+        let p = p.min(self.v_max / (1.0 + half));
+        Ok(vec![(p * (1.0 - half), tight), (p * (1.0 + half), tight)])
     }
 
-    /// Stage 3: each threshold is the centre of its final bracket; none where the outcome above
-    /// it was never seen.
+    /// The bracket of a transition from full-tolerance collisions only.
+    fn tight_bracket(&self, is_above: impl Fn(Outcome) -> bool) -> Bracket {
+        let tight = self.tight();
+        let pts = || self.seen.iter().filter(|p| p.rung == tight);
+        let hi = pts()
+            .filter(|p| is_above(p.outcome))
+            .min_by(|a, b| a.v.total_cmp(&b.v))
+            .copied();
+        let lo = pts()
+            .filter(|p| !is_above(p.outcome) && hi.is_none_or(|h| p.v < h.v))
+            .max_by(|a, b| a.v.total_cmp(&b.v))
+            .copied();
+        (lo, hi)
+    }
+
+    /// The root of V_out(V_in) by a secant through the two speeds with the smallest |V_out|
+    /// among double collisions and bouncing integrated on `rung` or finer (extrapolated from
+    /// the bouncing side while no double collision is known). `None` without two such speeds.
+    fn v_out_root(&self, rung: usize) -> Option<f64> {
+        let mut pts: Vec<Seen> = self
+            .seen
+            .iter()
+            .filter(|p| not_sticking(p.outcome) && p.rung >= rung)
+            .copied()
+            .collect();
+        pts.sort_by(|a, b| a.v_out.abs().total_cmp(&b.v_out.abs()));
+        let [a, b, ..] = pts.as_slice() else {
+            return None;
+        };
+        if a.v_out == b.v_out || a.v == b.v {
+            return None;
+        }
+        let p = a.v - a.v_out * (b.v - a.v) / (b.v_out - a.v_out);
+        (p.is_finite() && p > 0.0 && p < self.v_max).then_some(p)
+    }
+
+    /// The next speeds (one or two) for the onset of double collisions; none when it is done.
+    ///
+    /// The onset is a jump in the outcome: it is trisected on the coarsest rung the bracket's
+    /// width allows. An end found on a coarser rung than the width now needs is integrated again
+    /// on the current rung first (a coarse speed within its rung's shift of the onset may be
+    /// misclassified), and the final ends at full tolerance.
+    fn onset_jobs(&self) -> Vec<(f64, usize)> {
+        let (Some(lo), Some(hi)) = self.bracket(not_sticking) else {
+            return Vec::new();
+        };
+        let width = (hi.v - lo.v) / hi.v;
+        let rung = if width <= self.opts.rel_tol {
+            self.tight()
+        } else {
+            self.rung_for(width)
+        };
+        let mut jobs: Vec<(f64, usize)> = [lo, hi]
+            .iter()
+            .filter(|end| end.rung < rung)
+            .map(|end| (end.v, rung))
+            .collect();
+        if width > self.opts.rel_tol {
+            match jobs.len() {
+                0 => jobs = trisect(lo.v, hi.v, rung),
+                1 => jobs.push((0.5 * (lo.v + hi.v), rung)),
+                _ => {}
+            }
+        }
+        jobs
+    }
+
+    /// Stage 3: V_stick is the zero of V_out between the ends of its final bracket, the onset the
+    /// centre of its final bracket; none where the outcome above it was never seen.
     fn result(&self) -> StickingThresholds {
-        let center = |(lo, hi): Bracket| Some(0.5 * (lo? + hi?));
-        let v_stick = if self.seen.has(bouncing) {
-            center(self.seen.bracket(bouncing))
+        let center = |(lo, hi): Bracket| Some(0.5 * (lo?.v + hi?.v));
+        // V_stick: where V_out crosses zero between the final bracket's ends (a double collision
+        // and a bouncing one), else the bracket's centre
+        let root = |(lo, hi): Bracket| -> Option<f64> {
+            let (lo, hi) = (lo?, hi?);
+            if lo.outcome != Outcome::DoubleCollision {
+                return center((Some(lo), Some(hi)));
+            }
+            let p = lo.v - lo.v_out * (hi.v - lo.v) / (hi.v_out - lo.v_out);
+            if p.is_finite() && p >= lo.v && p <= hi.v {
+                Some(p)
+            } else {
+                center((Some(lo), Some(hi)))
+            }
+        };
+        let v_stick = if self.has(bouncing) {
+            root(self.tight_bracket(bouncing))
         } else {
             None
         };
-        let v_double_onset = if self.seen.has(not_sticking) {
-            center(self.seen.bracket(not_sticking))
+        let v_double_onset = if self.has(not_sticking) {
+            center(self.tight_bracket(not_sticking))
         } else {
             None
         };
         StickingThresholds {
-            t_vis: self.collider.t_vis(),
+            t_vis: self.colliders[0].t_vis(),
             v_stick,
             v_double_onset,
             v_stick_jkr: self.v_jkr,
             v_max: self.v_max,
-            collisions: self.seen.points.len(),
+            collisions: self.seen.len(),
         }
     }
-}
-
-fn midpoint((lo, hi): Bracket) -> f64 {
-    0.5 * (lo.unwrap_or(0.0) + hi.unwrap_or(0.0))
-}
-
-/// The two points that cut `[lo, hi]` in thirds.
-fn trisect(lo: Option<f64>, hi: Option<f64>) -> [f64; 2] {
-    let (lo, hi) = (lo.unwrap_or(0.0), hi.unwrap_or(0.0));
-    [lo + (hi - lo) / 3.0, lo + 2.0 * (hi - lo) / 3.0]
 }
 
 /// V_stick and V_double_onset of `contact` at relaxation time `t_vis` (s, >= 0) with the crack
@@ -411,20 +698,49 @@ pub fn sticking_thresholds(
             collisions: 0,
         });
     }
+    let mut colliders = Vec::with_capacity(LADDER.len() + 1);
+    for (rtol, _) in LADDER {
+        let solver = SolverOptions {
+            rtol,
+            atol: ATOL_OVER_RTOL * rtol,
+            ..opts.solver
+        };
+        colliders.push(Collider::new(*contact, law, t_vis)?.with_options(solver)?);
+    }
+    colliders.push(Collider::new(*contact, law, t_vis)?.with_options(opts.solver)?);
     let mut search = Search {
-        collider: Collider::new(*contact, law, t_vis)?.with_options(opts.solver)?,
+        colliders,
         opts,
         v_jkr,
         v_max,
-        seen: Seen::default(),
+        seen: Vec::new(),
+        stick: StickState {
+            settled: false,
+            estimate: None,
+            coarse_steps: 0,
+            half_width: TIGHT_PAIR_HALF_WIDTH,
+        },
     };
-    search.bracket()?;
+    search.bracket_stage()?;
     search.refine()?;
     Ok(search.result())
 }
 
+/// The last one or two results of a sweep with both thresholds, as `(t_vis, hint)` for
+/// [`Hint::extrapolated`] (none when the last has no hint).
+pub fn neighbours(done: &[StickingThresholds]) -> Vec<(f64, Hint)> {
+    done.iter()
+        .rev()
+        .take(2)
+        .map_while(|th| Some((th.t_vis, th.as_hint()?)))
+        .collect::<Vec<_>>()
+        .into_iter()
+        .rev()
+        .collect()
+}
+
 /// `sticking_thresholds` over a sequence of relaxation times (s), each search started from the
-/// previous point's thresholds (see [`SearchOptions::hint`]). Use an increasing or decreasing
+/// thresholds of the previous points (see [`SearchOptions::hint`], [`Hint::extrapolated`]). Use an increasing or decreasing
 /// sequence: neighbours then have close thresholds.
 pub fn sweep_t_vis(
     contact: &Contact,
@@ -434,7 +750,7 @@ pub fn sweep_t_vis(
 ) -> Result<Vec<StickingThresholds>, ThresholdsError> {
     let mut out: Vec<StickingThresholds> = Vec::with_capacity(t_vis.len());
     for &t in t_vis {
-        let hint = out.last().and_then(StickingThresholds::as_hint);
+        let hint = Hint::extrapolated(t, &neighbours(&out));
         let o = SearchOptions {
             hint: hint.or(opts.hint),
             ..*opts

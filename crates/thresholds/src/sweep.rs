@@ -5,7 +5,7 @@
 //! k (outermost first); [`Grid::index`] numbers its points in that order. It is computed in
 //! [`Chunk`]s: one chunk holds every T_vis of one combination of the other axes, in increasing
 //! order of the T_vis axis, and each search after the first is seeded with its neighbour's
-//! thresholds (as [`crate::sweep_t_vis`]). Every front end (the CLI's `stickiness sweep`, the
+//! thresholds, extrapolated from the previous two (as [`crate::sweep_t_vis`]). Every front end (the CLI's `stickiness sweep`, the
 //! Python `stickiness.sweep` in process or on a Dask cluster) computes the same chunks the same
 //! way, so they give the same numbers, and a chunk computed twice (a retried task, a resumed
 //! file) gives the same rows. A chunk can start part-way, from the hint its last completed row
@@ -100,7 +100,7 @@ pub struct Row {
 }
 
 impl Row {
-    /// The hint this row gives the next T_vis of its chunk.
+    /// This row's thresholds as a hint for the next T_vis of its chunk.
     pub fn hint(&self) -> Option<Hint> {
         Some(Hint {
             v_double_onset: self.v_double_onset?,
@@ -278,25 +278,28 @@ impl Chunk {
         laws: &impl Fn(f64) -> Result<CrackLaw, ThresholdsError>,
         opts: &SearchOptions,
     ) -> Result<Vec<Row>, ThresholdsError> {
-        self.compute_from(0, None, laws, opts, &mut |_| {})
+        self.compute_from(0, &[], laws, opts, &mut |_| {})
     }
 
-    /// Computes the points from `start` on, the first seeded with `hint` (the hint of point
-    /// `start - 1`, as [`Row::hint`] gives it), calling `done` with each row as it is found.
-    /// `laws(k)` gives the crack law of a k (build each once and share it).
+    /// Computes the points from `start` on, calling `done` with each row as it is found.
+    /// `previous` holds the thresholds of the points just before `start` (the last one or two,
+    /// as `(t_vis, hint)` from [`Row::hint`]; empty for a fresh chunk), which seed the first
+    /// search as they would have in an uninterrupted run. `laws(k)` gives the crack law of a k
+    /// (build each once and share it).
     pub fn compute_from(
         &self,
         start: usize,
-        hint: Option<Hint>,
+        previous: &[(f64, Hint)],
         laws: &impl Fn(f64) -> Result<CrackLaw, ThresholdsError>,
         opts: &SearchOptions,
         done: &mut impl FnMut(&Row),
     ) -> Result<Vec<Row>, ThresholdsError> {
-        let mut hint = hint;
+        let mut previous: Vec<(f64, Hint)> = previous.to_vec();
         let mut rows = Vec::with_capacity(self.points.len().saturating_sub(start));
         for p in self.points.iter().skip(start) {
             let contact = Contact::new(p.constants, p.geometry)?;
             let law = laws(p.k)?;
+            let hint = Hint::extrapolated(p.t_vis, &previous);
             let o = SearchOptions { hint, ..*opts };
             let th: StickingThresholds = sticking_thresholds(&contact, &law, p.t_vis, &o)?;
             let row = Row {
@@ -308,7 +311,15 @@ impl Chunk {
                 no_bouncing_below: th.no_bouncing_below(),
                 warnings: contact.warnings().iter().map(|w| w.to_string()).collect(),
             };
-            hint = row.hint();
+            match row.hint() {
+                Some(h) => {
+                    previous.push((p.t_vis, h));
+                    if previous.len() > 2 {
+                        previous.remove(0);
+                    }
+                }
+                None => previous.clear(),
+            }
             done(&row);
             rows.push(row);
         }

@@ -4,8 +4,8 @@
 //! The grid and its chunks come from `thresholds::sweep` (shared with the Python package, so
 //! both give the same numbers). Chunks run on all cores; rows are written in grid order as soon
 //! as they and every row before them are done, each with one `write` call. `--resume` keeps the
-//! complete rows of an existing file (dropping a torn last line), restores each chunk's hint
-//! from its last written row, and computes only the rest, so that a resumed file equals an
+//! complete rows of an existing file (dropping a torn last line), restores each chunk's hints
+//! from its last written rows, and computes only the rest, so that a resumed file equals an
 //! uninterrupted one byte for byte.
 
 use crate::args::Overrides;
@@ -468,6 +468,16 @@ impl Progress {
     }
 }
 
+/// What is left of one chunk of the grid.
+struct Remaining {
+    chunk: Chunk,
+    /// Index in `chunk.points` of its first point not yet written.
+    start: usize,
+    /// `(t_vis, thresholds)` of the chunk's last one or two written points, the hints of an
+    /// uninterrupted run (see `thresholds::Hint::extrapolated`).
+    previous: Vec<(f64, Hint)>,
+}
+
 /// Runs the command.
 pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
     let (grid, header) = args.grid()?;
@@ -510,19 +520,30 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
         v_max: args.v_max,
         ..SearchOptions::default()
     };
-    // what is left of each chunk, with the hint of its last written row
+    // what is left of each chunk, with the thresholds of its last written rows (the hints of an
+    // uninterrupted run)
     let done = written.len();
-    let work: Vec<(Chunk, usize, Option<Hint>)> = grid
+    let work: Vec<Remaining> = grid
         .chunks()
         .into_iter()
         .filter_map(|c| {
             let start = c.points.iter().take_while(|p| p.index < done).count();
             (start < c.points.len()).then(|| {
-                let hint = start
-                    .checked_sub(1)
-                    .and_then(|i| written.get(c.points[i].index))
-                    .and_then(|line| hint_of(args.format, line));
-                (c, start, hint)
+                let mut previous: Vec<(f64, Hint)> = c.points[..start]
+                    .iter()
+                    .rev()
+                    .take(2)
+                    .map_while(|p| {
+                        let hint = written.get(p.index).and_then(|l| hint_of(args.format, l))?;
+                        Some((p.t_vis, hint))
+                    })
+                    .collect();
+                previous.reverse();
+                Remaining {
+                    chunk: c,
+                    start,
+                    previous,
+                }
             })
         })
         .collect();
@@ -561,11 +582,17 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
                         if i >= work.len() || stop.load(Ordering::Relaxed) {
                             break;
                         }
-                        let (chunk, start, hint) = &work[i];
+                        let Remaining {
+                            chunk,
+                            start,
+                            previous,
+                        } = &work[i];
                         let mut send = |row: &Row| {
                             let _ = tx.send(Ok(row.clone()));
                         };
-                        if let Err(e) = chunk.compute_from(*start, *hint, law, options, &mut send) {
+                        if let Err(e) =
+                            chunk.compute_from(*start, previous, law, options, &mut send)
+                        {
                             let _ = tx.send(Err(e));
                             stop.store(true, Ordering::Relaxed);
                         }

@@ -1,0 +1,51 @@
+//! The default V_stick search against a tight reference: the accuracy claim of
+//! `docs/performance.md` ("Accuracy").
+//!
+//! ```sh
+//! cargo run --release -p thresholds --example tight_reference
+//! ```
+//! For each case, V_stick and V_double_onset with `SearchOptions::default()` (relative
+//! tolerance 1e-6) and with a reference search (BDF at rtol 1e-11, bracket 1e-9); prints the
+//! relative differences and the number of collisions of the default search.
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use thresholds::{
+    sticking_thresholds, Contact, CrackLaw, Geometry, Material, Method, SearchOptions,
+    SolverOptions,
+};
+
+fn main() {
+    let law = CrackLaw::new(0.01).unwrap();
+    let co2 = Contact::new(Material::co2(), Geometry::identical(60e-6)).unwrap();
+    let h2o = Contact::new(Material::h2o(), Geometry::identical(90e-6)).unwrap();
+    let reference = SearchOptions {
+        rel_tol: 1e-9,
+        solver: SolverOptions {
+            method: Method::Bdf,
+            rtol: 1e-11,
+            atol: 1e-14,
+            ..SolverOptions::default()
+        },
+        ..SearchOptions::default()
+    };
+    println!("case | V_stick - ref | V_double_onset - ref | collisions");
+    for (name, contact, t_vis) in [
+        ("CO2 60 um, T_vis = 1e-9 s", co2, 1e-9),
+        ("CO2 60 um, T_vis = 1e-14 s", co2, 1e-14),
+        ("H2O 90 um, T_vis = 1e-9 s", h2o, 1e-9),
+        ("CO2 60 um, T_vis = 1e-12 s", co2, 1e-12),
+        ("CO2 60 um, T_vis = 1e-11 s", co2, 1e-11),
+        ("CO2 60 um, T_vis = 1e-10 s", co2, 1e-10),
+        ("CO2 60 um, T_vis = 1e-8 s", co2, 1e-8),
+    ] {
+        let r = sticking_thresholds(&contact, &law, t_vis, &reference).unwrap();
+        let d = sticking_thresholds(&contact, &law, t_vis, &SearchOptions::default()).unwrap();
+        let rel = |a: Option<f64>, b: Option<f64>| a.unwrap() / b.unwrap() - 1.0;
+        println!(
+            "{name} | {:+.1e} | {:+.1e} | {}",
+            rel(d.v_stick, r.v_stick),
+            rel(d.v_double_onset, r.v_double_onset),
+            d.collisions
+        );
+    }
+}
