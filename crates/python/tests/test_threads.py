@@ -60,7 +60,9 @@ def test_ctrl_c_stops_a_long_array_call():
     start = time.perf_counter()
     st.v_stick(CO2, t_vis=probe)
     per_element = (time.perf_counter() - start) / probe.size
-    n = int(max(6.0 / per_element, 64))  # an uninterrupted call of at least ~6 s
+    # an uninterrupted call of at least ~6 s; at least 3000 elements (>= 1.5 s even at 1 ms an
+    # element on two cores) in case the probe ran slow, e.g. while other tests' workers exit
+    n = int(max(6.0 / per_element, 3000))
     timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
     start = time.perf_counter()
     timer.start()
