@@ -65,17 +65,21 @@ impl Overrides {
         let (mut m, file) = match Material::preset(name) {
             Some(m) => (m, None),
             None => {
-                let m = Material::read_json_file(Path::new(name)).map_err(|e| match e {
-                    contact::ContactError::MaterialFileNotFound { .. }
-                        if !name.contains('/') && !name.ends_with(".json") =>
-                    {
-                        contact::ContactError::UnknownMaterial {
-                            name: name.to_string(),
-                            presets: contact::PRESETS,
+                let m = Material::read_json_file(Path::new(name))
+                    .map_err(|e| match e {
+                        contact::ContactError::MaterialFileNotFound { .. }
+                            if !name.contains('/') && !name.ends_with(".json") =>
+                        {
+                            contact::ContactError::UnknownMaterial {
+                                name: name.to_string(),
+                                presets: contact::PRESETS,
+                            }
                         }
-                    }
-                    other => other,
-                })?;
+                        other => other,
+                    })
+                    // the flag first, as every other bad input names it (`material NAME` takes it
+                    // as an argument, where the name alone is clear)
+                    .map_err(|e| CliError::Usage(format!("--material: {e}")))?;
                 (m, Some(name))
             }
         };
