@@ -61,7 +61,9 @@ impl Overrides {
 
     /// Resolves `name` (a preset or a JSON file) and applies the overrides. A bad value names
     /// the flag when it was overridden and the file (and field) when it came from the file.
-    pub fn resolve(&self, name: &str) -> Result<NamedMaterial, CliError> {
+    /// `prefix` starts the message of an unknown name or unreadable file: `"--material: "` where
+    /// the name came from that flag, `""` for `material NAME`, where the name alone is clear.
+    pub fn resolve(&self, name: &str, prefix: &str) -> Result<NamedMaterial, CliError> {
         let (mut m, file) = match Material::preset(name) {
             Some(m) => (m, None),
             None => {
@@ -77,9 +79,7 @@ impl Overrides {
                         }
                         other => other,
                     })
-                    // the flag first, as every other bad input names it (`material NAME` takes it
-                    // as an argument, where the name alone is clear)
-                    .map_err(|e| CliError::Usage(format!("--material: {e}")))?;
+                    .map_err(|e| CliError::Usage(format!("{prefix}{e}")))?;
                 (m, Some(name))
             }
         };
@@ -120,7 +120,7 @@ impl Overrides {
 impl MaterialArgs {
     /// The material after overrides, validated.
     pub fn resolve(&self) -> Result<NamedMaterial, CliError> {
-        self.overrides.resolve(&self.material)
+        self.overrides.resolve(&self.material, MATERIAL_PREFIX)
     }
 }
 
@@ -295,3 +295,6 @@ impl SearchArgs {
         }
     }
 }
+
+/// How a bad `--material` value starts its message: with the flag, as every other bad input.
+pub const MATERIAL_PREFIX: &str = "--material: ";

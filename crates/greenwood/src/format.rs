@@ -64,13 +64,24 @@ pub fn length(metres: f64) -> String {
 mod tests {
     use super::*;
 
-    /// The format is serde_json's: the two agree on values across the whole range.
+    /// Round trip across the whole range: the text reads back to the same f64 (the property the
+    /// format promises; the literal forms are in the doctest of [`number`]).
     #[test]
-    fn same_as_json() {
+    fn reads_back_to_the_same_value() {
         for x in [
-            6e-5, 1e-5, 1e-4, 0.04, 60.0, 1e15, 1e16, 1e-300, 123456.789, -2.5e-7,
+            6e-5,
+            1e-5,
+            1e-4,
+            0.04,
+            60.0,
+            1e15,
+            1e16,
+            1e-300,
+            123456.789,
+            -2.5e-7,
+            0.1 + 0.2,
         ] {
-            assert_eq!(number(x), serde_json::Value::from(x).to_string(), "{x}");
+            assert_eq!(number(x).parse::<f64>(), Ok(x), "{x}");
         }
         assert_eq!(number(f64::INFINITY), "inf");
         assert_eq!(number(f64::NEG_INFINITY), "-inf");

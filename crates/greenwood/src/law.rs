@@ -167,7 +167,8 @@ pub fn alpha_of_beta(k: f64, beta: f64) -> Result<Option<CrackPoint>, GreenwoodE
         hi
     } else {
         let opts = Illinois {
-            // ln alpha to 1e-14 relative: alpha, and hence v, to about 1e-13
+            // ln alpha to 1e-14 of its bracket's width (about 1.4e-12 absolute): alpha to about
+            // 1.4e-12 relative
             x_tol: 1e-14 * LN_ALPHA_BRACKET,
             ..Illinois::default()
         };

@@ -36,7 +36,7 @@
 //!   [`v_direct`] for a given beta.
 //! - [`table`]: [`CrackLaw`], built once per k, evaluates `v` and `dv/dbeta` in well under a
 //!   microsecond with a relative error below 1e-8 over alpha in [1e-6, 1e8].
-//! - [`roots`]: the Illinois root finder every search of the workspace uses.
+//! - [`roots`]: the Illinois root finder of the crack-law inversion and the T_vis fit.
 //! - [`error`]: [`OutOfRange`], the one "bad input" error, wrapped by every crate above;
 //!   [`format`]: the one number format (shortest round-trip, as in JSON).
 //!

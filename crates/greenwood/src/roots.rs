@@ -1,4 +1,6 @@
-//! The one bracketing root finder of the workspace: the Illinois variant of regula falsi.
+//! The workspace's bracketing root finder for smooth functions: the Illinois variant of regula
+//! falsi. (The threshold searches of `thresholds` classify outcomes, which jump, and keep their
+//! own secant and trisection steps on collisions.)
 //!
 //! Used for the crack-law inversion ([`crate::alpha_of_beta`], in `ln alpha`) and for the
 //! relaxation time that reproduces a measured V_stick (`thresholds::fit_t_vis`, in `ln T_vis`).

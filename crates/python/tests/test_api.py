@@ -70,7 +70,8 @@ def test_bad_values_name_the_argument_and_element():
 
 def test_fit_below_jkr_gives_v_stick_jkr():
     # Section 5.1: V_stick > V_stick,JKR = 0.0166 m/s for every T_vis > 0
-    with pytest.raises(ValueError, match=r"^v_stick = 0\.016: must be > V_stick,JKR = 0\.0165940"):
+    # V_stick,JKR = 1.659e-2 m/s for CO2, R1 = 60 um (Arakawa & Krijt 2021, Section 5.1)
+    with pytest.raises(ValueError, match=r"^v_stick = 0\.016: must be > V_stick,JKR = 0\.01659"):
         st.fit_t_vis(CO2, v_stick=0.016)
 
 
@@ -158,3 +159,13 @@ def test_geometry_arguments():
 
 def test_version():
     assert isinstance(st.__version__, str) and st.__version__.count(".") == 2
+
+
+def test_warnings_point_at_the_callers_line():
+    # Python's convention for library warnings: the location is the user's call, so that the
+    # default filter shows each one once per calling line
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        st.jkr(CO2, radius=60.0)
+        st.v_stick(CO2, radius=60.0, t_vis=1e-9)
+    assert [w.filename for w in caught] == [__file__, __file__]

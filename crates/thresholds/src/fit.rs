@@ -9,7 +9,7 @@ use crate::stick::{sticking_thresholds, SearchOptions, V_SEARCH_LIMIT};
 use crate::ThresholdsError;
 use contact::Contact;
 use greenwood::roots::{illinois, Illinois};
-use greenwood::{CrackLaw, OutOfRange};
+use greenwood::{format::number, CrackLaw, OutOfRange};
 
 /// Relative tolerance of the fitted T_vis (dimensionless): far below the uncertainty of any
 /// measured V_stick, and 1e-5 in T_vis moves V_stick by at most ~1e-4 (d ln V/d ln T < 13).
@@ -49,7 +49,7 @@ fn check_v_stick(v: f64) -> Result<(), OutOfRange> {
         Err(OutOfRange::new(
             "v_stick",
             v,
-            "0 < v_stick <= 5000.0",
+            format!("0 < v_stick <= {}", number(V_STICK_FIT_MAX)),
             "m/s",
         ))
     }

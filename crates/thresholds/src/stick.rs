@@ -30,7 +30,7 @@
 use crate::ThresholdsError;
 use contact::Contact;
 use dynamics::{Collider, Outcome, SolverOptions};
-use greenwood::{CrackLaw, OutOfRange};
+use greenwood::{format::number, CrackLaw, OutOfRange};
 
 /// Highest impact speed any search integrates (m/s): 10 km/s is far above the collision speeds
 /// of dust and ice grains (tens of m/s) and far beyond where contact mechanics applies.
@@ -54,7 +54,7 @@ const HINT_BELOW: f64 = 0.9;
 /// See [`HINT_BELOW`].
 const HINT_ABOVE: f64 = 1.1;
 /// Growth of the upper trial per step while nothing bounces: 1.5 keeps the bracket of V_out
-/// tight enough for regula falsi while reaching 1000 V_stick,JKR in 9 rounds.
+/// tight enough for the secant steps on V_out while reaching 1000 V_stick,JKR in 9 rounds.
 const UPPER_GROWTH: f64 = 1.5;
 /// Shrink factor of the lower trial while nothing sticks (rare: a wrong hint, extreme inputs).
 const LOWER_SHRINK: f64 = 0.25;
@@ -148,7 +148,12 @@ impl SearchOptions {
         }
         if let Some(v) = self.v_max {
             if !(v > 0.0 && v <= V_SEARCH_LIMIT) {
-                return Err(OutOfRange::new("v_max", v, "0 < v_max <= 10000.0", "m/s"));
+                return Err(OutOfRange::new(
+                    "v_max",
+                    v,
+                    format!("0 < v_max <= {}", number(V_SEARCH_LIMIT)),
+                    "m/s",
+                ));
             }
         }
         self.solver.validate()
@@ -221,9 +226,9 @@ const LADDER_MARGIN: f64 = 4.0;
 /// The rung of the coarse secant steps on V_out: 1e-5, a third of the cost of full tolerance,
 /// and V_out accurate to about 1e-5.
 const COARSE_SECANT_RUNG: usize = 1;
-/// Coarse steps on V_out at most (bisection until two speeds have a V_out, then secant),
-/// before the full-tolerance pairs take over: a bisection from a factor 1.5 down to the first
-/// pair's width takes 13.
+/// Coarse steps on V_out at most (trisection until a secant root falls inside the bracket, then
+/// secant steps), before the full-tolerance pairs take over: trisecting a bracket of a factor 1.5
+/// down to the first pair's width (3e-4) takes 7, and the rest leaves room for secant steps.
 const MAX_COARSE_SECANT_STEPS: usize = 24;
 /// A coarse secant estimate has settled when it moves by less than this (relative): the
 /// transitions move by about 1e-5 on the coarse rung, so finer steps there are noise.
@@ -401,6 +406,9 @@ impl Search<'_> {
         }
         if hinted.is_some() && !self.has(sticks) {
             self.round(&[(v, coarse), (0.5 * v, coarse)])?;
+            // the loop below continues from 0.5 v, already integrated: its first round is
+            // 0.25 v and 0.125 v
+            v *= 0.5;
         }
         while !self.has(sticks) {
             v *= LOWER_SHRINK;
@@ -446,10 +454,10 @@ impl Search<'_> {
     /// V_out(V_in) is continuous through V_stick (positive for double collisions, negative for
     /// bouncing), so V_stick is a root of V_out. Coarse collisions only estimate that root (a
     /// coarse collision near it may be misclassified, so their outcomes are not used for the
-    /// result): secant steps on the coarse rung, safeguarded by bisection, until they move by less
+    /// result): secant steps on the coarse rung, safeguarded by trisection, until they move by less
     /// than [`SECANT_SETTLED`]. Then pairs of full-tolerance collisions: around the estimate,
     /// then a quarter of the tolerance either side of the secant root through them, which closes
-    /// the bracket; wider pairs or bisection continue at full tolerance when a pair does not
+    /// the bracket; wider pairs or trisection continue at full tolerance when a pair does not
     /// straddle V_stick.
     fn stick_jobs(&mut self) -> Result<Vec<(f64, usize)>, ThresholdsError> {
         if !self.has(bouncing) {

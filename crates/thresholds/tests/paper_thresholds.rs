@@ -275,7 +275,7 @@ fn parallel_rounds_are_deterministic() {
     assert_eq!(a, run(true));
 }
 
-/// A sweep seeded by its neighbours finds the same thresholds (within the bisection tolerance)
+/// A sweep seeded by its neighbours finds the same thresholds (within the search tolerance)
 /// with fewer collisions; a wrong hint costs collisions, not accuracy.
 #[test]
 fn hinted_sweep_agrees_with_independent_searches() {

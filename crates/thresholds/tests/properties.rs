@@ -1,5 +1,5 @@
 //! Property: dissipation only makes sticking easier, so V_stick >= V_stick,JKR (within the
-//! bisection tolerance) for any grain and relaxation time (Arakawa & Krijt 2021, Section 5.1).
+//! search tolerance) for any grain and relaxation time (Arakawa & Krijt 2021, Section 5.1).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 

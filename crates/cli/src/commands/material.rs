@@ -18,7 +18,7 @@ pub struct MaterialArgs {
 
 /// Runs the command.
 pub fn run(args: &MaterialArgs) -> Result<Report, CliError> {
-    let named = args.overrides.resolve(&args.name)?;
+    let named = args.overrides.resolve(&args.name, "")?;
     let m = &named.material;
     let mut r = Report::new(format!("Material {}", named.short));
     r.text("material", &named.given);

@@ -169,7 +169,7 @@ impl SweepArgs {
             .material
             .split(',')
             .map(|name| {
-                let named = overrides.resolve(name.trim())?;
+                let named = overrides.resolve(name.trim(), crate::args::MATERIAL_PREFIX)?;
                 Ok(NamedMaterial {
                     name: named.given,
                     material: named.material,
@@ -481,6 +481,10 @@ struct Remaining {
 /// Runs the command.
 pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
     let (grid, header) = args.grid()?;
+    // every bad input before any work starts (or any file is written)
+    if args.jobs == Some(0) {
+        return Err(CliError::Usage("--jobs = 0: must be >= 1".into()));
+    }
     let header = header_text(args.format, &header);
     let path = &args.out;
     let exists = path.exists();
@@ -550,9 +554,6 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
     let jobs = args
         .jobs
         .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
-    if jobs == 0 {
-        return Err(CliError::Usage("--jobs = 0: must be >= 1".into()));
-    }
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(jobs)
         .build()

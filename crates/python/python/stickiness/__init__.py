@@ -163,7 +163,8 @@ class _Broadcast:
                     f" [first at element {tuple(int(i) for i in where)}; "
                     f"{len(items)} of {self.size} elements]"
                 )
-            warnings.warn(text, StickinessWarning, stacklevel=4)
+            # warnings.warn <- _Broadcast.warn <- st.<function> <- the user's line
+            warnings.warn(text, StickinessWarning, stacklevel=3)
 
 
 def _material(material: Any) -> Material:

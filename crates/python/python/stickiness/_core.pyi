@@ -2,7 +2,8 @@
 
 Every vectorised function takes flat float64 arrays of one length (the broadcast arguments) and
 returns flat arrays (NaN where a value does not exist) with a ``"warnings"`` list of
-``(index, kind, message)``. All quantities are SI.
+``(index, kind, message)``; ``crack_speed`` and ``t_vis_law`` return a bare array. All quantities
+are SI.
 """
 
 from os import PathLike
