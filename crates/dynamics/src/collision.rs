@@ -17,6 +17,13 @@
 //!    delta while still in contact) has already failed to separate on an outward swing with more
 //!    energy than any later one has; it is declared sticking. The tests show that the transitions
 //!    do not move when this number is changed.
+//!
+//! # Continuing from the rebound
+//! The equations are autonomous, so a collision is determined by its state at any point. Each
+//! collision records its state where delta first returns to zero on the way out
+//! ([`Collision::rebound`]); [`Collider::collide_from`] continues a collision from such a state,
+//! for instance one interpolated by [`Rebound::between`] from two collisions at nearby speeds.
+//! The threshold searches use this: outcomes are decided after the rebound.
 
 use crate::model::{self, Params, NSTATES};
 use crate::scales::Scales;
@@ -246,7 +253,89 @@ pub struct Collision {
     pub method: Method,
     /// Trajectory, when [`SolverOptions::record_trajectory`] is set.
     pub trajectory: Vec<TrajectoryPoint>,
+    /// Where the collision first crossed delta = 0 on its way out, if it did: the state
+    /// [`Collider::collide_from`] continues a collision of a nearby impact speed from.
+    pub rebound: Option<Rebound>,
 }
+
+/// The state of a collision where delta first returns to zero on its way out (the rebound,
+/// `delta_dot < 0`), from which [`Collider::collide_from`] continues it.
+///
+/// The system is autonomous, so the rest of a collision depends only on this state. Between two
+/// impact speeds close together the rebound state is a smooth function of the speed: for a speed
+/// in between, [`Rebound::between`] interpolates it linearly, with an error of order
+/// `(relative width)^2 / 8` of the state (`docs/performance.md`, "Rebound restarts").
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Rebound {
+    /// Impact speed of the collision (m/s).
+    v_in: f64,
+    /// Nondimensional state `(x, y, p, tau)` at the crossing (`y = 0`).
+    u: [f64; NSTATES],
+    /// The solver's step size there (pseudo-time units), the first step of a continuation.
+    h: f64,
+    /// Maxima of delta before the crossing (oscillations counted by the sticking criterion).
+    maxima: usize,
+    /// Largest beta at a step before the crossing.
+    beta_max: f64,
+    /// Largest increase of the energy between steps before the crossing (units of E0).
+    max_increase: f64,
+}
+
+impl Rebound {
+    /// Impact speed of the collision this rebound belongs to (m/s).
+    pub fn v_in(&self) -> f64 {
+        self.v_in
+    }
+
+    /// The nondimensional state `(x, y, p, tau)` at the rebound (`y = 0`; see [`crate::model`]).
+    pub fn state(&self) -> [f64; NSTATES] {
+        self.u
+    }
+
+    /// Time from first contact to the rebound (s), given the collider's scales.
+    pub fn time(&self, scales: &Scales) -> f64 {
+        self.u[3] * scales.t0
+    }
+
+    /// The rebound of a collision at `v_in` (m/s), strictly between the impact speeds of `a` and
+    /// `b`, by linear interpolation of their states in the impact speed. `None` when `v_in` is
+    /// not between them or they counted different oscillations before their rebound.
+    pub fn between(a: &Rebound, b: &Rebound, v_in: f64) -> Option<Rebound> {
+        let (a, b) = if a.v_in <= b.v_in { (a, b) } else { (b, a) };
+        if !(v_in > a.v_in && v_in < b.v_in) || a.maxima != b.maxima {
+            return None;
+        }
+        let w = (v_in - a.v_in) / (b.v_in - a.v_in);
+        let lerp = |x: f64, y: f64| x + w * (y - x);
+        let mut u = [0.0; NSTATES];
+        for (i, ui) in u.iter_mut().enumerate() {
+            *ui = lerp(a.u[i], b.u[i]);
+        }
+        Some(Rebound {
+            v_in,
+            u,
+            h: a.h.min(b.h),
+            maxima: a.maxima,
+            beta_max: a.beta_max.max(b.beta_max),
+            max_increase: a.max_increase.max(b.max_increase),
+        })
+    }
+}
+
+/// Where an integration starts: first contact, or a rebound.
+#[derive(Debug, Clone, Copy)]
+struct Start {
+    u: [f64; NSTATES],
+    h0: f64,
+    maxima: usize,
+    beta_max: f64,
+    max_increase: f64,
+    /// The rebound it starts from (kept in the result), if any.
+    rebound: Option<Rebound>,
+}
+
+/// Secant (Illinois) iterations that place a rebound on delta = 0 inside the step that crossed it.
+const REBOUND_ITERATIONS: usize = 8;
 
 /// Integrates collisions of one contact at one relaxation time.
 ///
@@ -398,7 +487,62 @@ impl Collider {
         if !(v_in.is_finite() && v_in > 0.0) {
             return Err(OutOfRange::new("v_in", v_in, "> 0 and finite", "m/s").into());
         }
-        let u0 = self.initial_state(v_in);
+        let u = self.initial_state(v_in);
+        self.integrate(
+            v_in,
+            Start {
+                u,
+                h0: H0,
+                maxima: 0,
+                beta_max: model::beta(u[0], u[1]),
+                max_increase: 0.0,
+                rebound: None,
+            },
+        )
+    }
+
+    /// Continues a collision at impact speed `v_in` (m/s) from its `rebound` (for instance one
+    /// interpolated by [`Rebound::between`] from two collisions at nearby speeds): the same
+    /// outcome as [`Collider::collide`] for the part after the rebound, at a fraction of the
+    /// cost. The result's `steps` count the steps after the rebound; its trajectory starts there.
+    ///
+    /// # Example
+    /// ```
+    /// use contact::{Contact, Geometry, Material};
+    /// use dynamics::{Collider, Rebound};
+    /// use greenwood::CrackLaw;
+    /// let contact = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+    /// let collider = Collider::new(contact, CrackLaw::new(0.01)?, 1e-9)?;
+    /// // 4.500 and 4.504 cm/s bounce; their rebounds, interpolated, start one at 4.502 cm/s
+    /// let (a, b) = (collider.collide(0.04500)?, collider.collide(0.04504)?);
+    /// let rebound = Rebound::between(&a.rebound.unwrap(), &b.rebound.unwrap(), 0.04502).unwrap();
+    /// let full = collider.collide(0.04502)?;
+    /// let continued = collider.collide_from(0.04502, &rebound)?;
+    /// assert_eq!(full.outcome, continued.outcome);
+    /// assert!((full.v_out / continued.v_out - 1.0).abs() < 1e-6);
+    /// assert!(continued.steps < full.steps / 2);
+    /// # Ok::<(), dynamics::DynamicsError>(())
+    /// ```
+    pub fn collide_from(&self, v_in: f64, rebound: &Rebound) -> Result<Collision, DynamicsError> {
+        if !(v_in.is_finite() && v_in > 0.0) {
+            return Err(OutOfRange::new("v_in", v_in, "> 0 and finite", "m/s").into());
+        }
+        let rebound = Rebound { v_in, ..*rebound };
+        self.integrate(
+            v_in,
+            Start {
+                u: rebound.u,
+                h0: rebound.h,
+                maxima: rebound.maxima,
+                beta_max: rebound.beta_max,
+                max_increase: rebound.max_increase,
+                rebound: Some(rebound),
+            },
+        )
+    }
+
+    fn integrate(&self, v_in: f64, start: Start) -> Result<Collision, DynamicsError> {
+        let u0 = start.u;
         let params = self.params;
         let law: &CrackLaw = &self.law;
         let beta_end = self.beta_end;
@@ -409,7 +553,7 @@ impl Collider {
                 let mut problem = OdeBuilder::<$mat>::new()
                     .rtol(opts.rtol)
                     .atol([opts.atol; NSTATES])
-                    .h0(H0)
+                    .h0(start.h0)
                     // the coloring path assembles the Jacobian in preallocated scratch vectors
                     // (the default path allocates two vectors per Jacobian evaluation)
                     .use_coloring(true)
@@ -449,7 +593,7 @@ impl Collider {
                         problem.atol *= diffsol::Scale(AUTO_EXPLICIT_RTOL_FACTOR);
                         let explicit = problem.tsit45().ok().map(|mut solver| {
                             let budget = auto_explicit_step_budget(rtol).min(opts.max_steps);
-                            self.run(&mut solver, v_in, budget, Method::Tsit45)
+                            self.run(&mut solver, v_in, &start, budget, Method::Tsit45)
                         });
                         problem.rtol = opts.rtol;
                         problem.atol = atol;
@@ -467,18 +611,18 @@ impl Collider {
                         let mut solver = problem
                             .esdirk34::<$lu>()
                             .map_err(|e| self.solver_error(v_in, e))?;
-                        self.run(&mut solver, v_in, opts.max_steps, method)
+                        self.run(&mut solver, v_in, &start, opts.max_steps, method)
                     }
                     Method::Tsit45 => {
                         let mut solver =
                             problem.tsit45().map_err(|e| self.solver_error(v_in, e))?;
-                        self.run(&mut solver, v_in, opts.max_steps, method)
+                        self.run(&mut solver, v_in, &start, opts.max_steps, method)
                     }
                     Method::Auto | Method::Bdf => {
                         let mut solver = problem
                             .bdf::<$lu>()
                             .map_err(|e| self.solver_error(v_in, e))?;
-                        self.run(&mut solver, v_in, opts.max_steps, Method::Bdf)
+                        self.run(&mut solver, v_in, &start, opts.max_steps, Method::Bdf)
                     }
                 }
             }};
@@ -487,6 +631,59 @@ impl Collider {
             Backend::Nalgebra => integrate!(NalgebraMat<f64>, NalgebraLU<f64>),
             Backend::Faer => integrate!(FaerMat<f64>, FaerLU<f64>),
         }
+    }
+
+    /// The state where delta crosses zero inside the last step, `(s0, y0)` to `(s1, y1)` with
+    /// `y0 > 0 >= y1`, from the solver's dense output (Illinois iterations on y); the rebound's
+    /// `maxima`, `beta_max` and `max_increase` are left for the caller. `None` if the dense
+    /// output fails.
+    fn locate_rebound<'s, Eqn, S>(
+        &self,
+        solver: &S,
+        v_in: f64,
+        (mut s0, mut y0): (f64, f64),
+        (mut s1, mut y1): (f64, f64),
+    ) -> Option<Rebound>
+    where
+        Eqn: OdeEquations<T = f64> + 's,
+        S: OdeSolverMethod<'s, Eqn>,
+    {
+        let mut at = (s1, y1);
+        let mut side = 0i8;
+        for _ in 0..REBOUND_ITERATIONS {
+            if y1 == 0.0 || s1 - s0 <= f64::EPSILON * s1.abs() {
+                break;
+            }
+            let s = s1 - y1 * (s1 - s0) / (y1 - y0);
+            let y = solver.interpolate(s).ok()?.get_index(1);
+            at = (s, y);
+            if y > 0.0 {
+                (s0, y0) = (s, y);
+                if side == 1 {
+                    y1 *= 0.5;
+                }
+                side = 1;
+            } else {
+                (s1, y1) = (s, y);
+                if side == -1 {
+                    y0 *= 0.5;
+                }
+                side = -1;
+            }
+        }
+        let v = solver.interpolate(at.0).ok()?;
+        let mut u = [0.0; NSTATES];
+        for (i, ui) in u.iter_mut().enumerate() {
+            *ui = v.get_index(i);
+        }
+        Some(Rebound {
+            v_in,
+            u,
+            h: solver.state().h,
+            maxima: 0,
+            beta_max: 0.0,
+            max_increase: 0.0,
+        })
     }
 
     fn solver_error(&self, v_in: f64, e: impl std::fmt::Display) -> DynamicsError {
@@ -530,6 +727,7 @@ impl Collider {
         &self,
         solver: &mut S,
         v_in: f64,
+        start: &Start,
         max_steps: usize,
         method: Method,
     ) -> Result<Collision, DynamicsError>
@@ -547,13 +745,17 @@ impl Collider {
             ]
         };
         let mut u = read(solver.state().y);
-        let e_initial = model::energy(u[0], u[1], u[2]);
+        // the margin is relative to the energy at first contact, also when starting at a rebound
+        let first = self.initial_state(v_in);
+        let e_initial = model::energy(first[0], first[1], first[2]);
         let threshold = self.energy_bound - opts.energy_margin * e_initial.abs().max(1.0);
-        let mut e_prev = e_initial;
-        let mut max_increase: f64 = 0.0;
-        let mut maxima = 0usize;
-        let mut beta_max = model::beta(u[0], u[1]);
+        let mut e_prev = model::energy(u[0], u[1], u[2]);
+        let mut max_increase: f64 = start.max_increase;
+        let mut maxima = start.maxima;
+        let mut beta_max = start.beta_max;
         let mut p_prev = u[2];
+        let mut rebound = start.rebound;
+        let mut s_prev = solver.state().t;
         let decide_after = opts.decide_after / self.scales.t0;
         let mut trajectory = Vec::new();
         if opts.record_trajectory {
@@ -592,8 +794,10 @@ impl Collider {
                     steps: step,
                     method,
                     trajectory,
+                    rebound,
                 });
             }
+            let y_prev = u[1];
             u = read(solver.state().y);
             beta_max = beta_max.max(model::beta(u[0], u[1]));
             let energy = model::energy(u[0], u[1], u[2]);
@@ -606,6 +810,16 @@ impl Collider {
                 maxima += 1;
             }
             p_prev = u[2];
+            let s_now = solver.state().t;
+            if rebound.is_none() && y_prev > 0.0 && u[1] <= 0.0 && u[2] < 0.0 {
+                rebound = self.locate_rebound(solver, v_in, (s_prev, y_prev), (s_now, u[1]));
+                if let Some(r) = rebound.as_mut() {
+                    r.maxima = maxima;
+                    r.beta_max = beta_max;
+                    r.max_increase = max_increase;
+                }
+            }
+            s_prev = s_now;
             let criterion = if u[3] < decide_after {
                 None
             } else if energy < threshold {
@@ -628,6 +842,7 @@ impl Collider {
                     steps: step,
                     method,
                     trajectory,
+                    rebound,
                 });
             }
         }

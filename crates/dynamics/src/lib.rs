@@ -37,9 +37,9 @@ pub mod model;
 pub mod scales;
 
 pub use collision::{
-    auto_explicit_step_budget, Backend, Collider, Collision, Method, Outcome, SolverOptions,
-    StickingCriterion, TrajectoryPoint, AUTO_EXPLICIT_LAMBDA_MAX, AUTO_EXPLICIT_RTOL_FACTOR,
-    AUTO_EXPLICIT_STEPS_AT_RTOL_1E8, EPS, H0,
+    auto_explicit_step_budget, Backend, Collider, Collision, Method, Outcome, Rebound,
+    SolverOptions, StickingCriterion, TrajectoryPoint, AUTO_EXPLICIT_LAMBDA_MAX,
+    AUTO_EXPLICIT_RTOL_FACTOR, AUTO_EXPLICIT_STEPS_AT_RTOL_1E8, EPS, H0,
 };
 pub use error::DynamicsError;
 pub use scales::Scales;

@@ -6,7 +6,8 @@
 //! ```
 //! For each case, V_stick and V_double_onset with `SearchOptions::default()` (relative
 //! tolerance 1e-6) and with a reference search (BDF at rtol 1e-11, bracket 1e-9); prints the
-//! relative differences and the number of collisions of the default search.
+//! relative differences and the number of collisions of the default search, then the same
+//! search without rebound restarts (`SearchOptions::restarts`).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use thresholds::{
@@ -26,9 +27,12 @@ fn main() {
             atol: 1e-14,
             ..SolverOptions::default()
         },
+        restarts: false,
         ..SearchOptions::default()
     };
-    println!("case | V_stick - ref | V_double_onset - ref | collisions");
+    println!(
+        "case | V_stick - ref | V_double_onset - ref | collisions | without restarts: V_stick - ref | V_double_onset - ref"
+    );
     for (name, contact, t_vis) in [
         ("CO2 60 um, T_vis = 1e-9 s", co2, 1e-9),
         ("CO2 60 um, T_vis = 1e-14 s", co2, 1e-14),
@@ -40,12 +44,19 @@ fn main() {
     ] {
         let r = sticking_thresholds(&contact, &law, t_vis, &reference).unwrap();
         let d = sticking_thresholds(&contact, &law, t_vis, &SearchOptions::default()).unwrap();
+        let no_restarts = SearchOptions {
+            restarts: false,
+            ..SearchOptions::default()
+        };
+        let n = sticking_thresholds(&contact, &law, t_vis, &no_restarts).unwrap();
         let rel = |a: Option<f64>, b: Option<f64>| a.unwrap() / b.unwrap() - 1.0;
         println!(
-            "{name} | {:+.1e} | {:+.1e} | {}",
+            "{name} | {:+.1e} | {:+.1e} | {} | {:+.1e} | {:+.1e}",
             rel(d.v_stick, r.v_stick),
             rel(d.v_double_onset, r.v_double_onset),
-            d.collisions
+            d.collisions,
+            rel(n.v_stick, r.v_stick),
+            rel(n.v_double_onset, r.v_double_onset),
         );
     }
 }

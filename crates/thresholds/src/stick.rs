@@ -24,12 +24,18 @@
 //!    (accurate to the solver's tolerance, well inside the bracket), the onset the centre of its
 //!    final bracket.
 //!
+//! A collision whose speed lies between two collisions of the same rung close together (a
+//! relative width of at most [`RESTART_MAX_WIDTH`] on the last rung, wider on coarse ones) starts
+//! at its rebound, the state where delta returns to zero, interpolated between theirs
+//! ([`dynamics::Rebound`]), instead of at first contact: the outcome is decided after the rebound,
+//! and the part before it is a half to two thirds of the steps ([`SearchOptions::restarts`]).
+//!
 //! Each round integrates two impact speeds, on two threads when asked; the speeds depend only on
 //! the outcomes seen, so the result does not depend on the threads.
 
 use crate::ThresholdsError;
 use contact::Contact;
-use dynamics::{Collider, Outcome, SolverOptions};
+use dynamics::{Collider, Outcome, Rebound, SolverOptions};
 use greenwood::{format::number, CrackLaw, OutOfRange};
 
 /// Highest impact speed any search integrates (m/s): 10 km/s is far above the collision speeds
@@ -79,6 +85,11 @@ pub struct SearchOptions {
     /// just below `v_double_onset` and just above `v_stick` instead of bracketing from
     /// V_stick,JKR. A wrong hint costs one round, never the result. Default none.
     pub hint: Option<Hint>,
+    /// Start a collision at its rebound, interpolated between two collisions close by on either
+    /// side, instead of at first contact, where that is accurate (a third to a half of the
+    /// cost; [`dynamics::Collider::collide_from`]). It moves the thresholds by less than 1e-7
+    /// relative (`docs/performance.md`, "Rebound restarts"). Default on; off for a reference.
+    pub restarts: bool,
 }
 
 /// Expected thresholds, from a neighbouring point of a sweep (m/s).
@@ -174,6 +185,7 @@ impl Default for SearchOptions {
             solver: Self::default_solver(),
             parallel: true,
             hint: None,
+            restarts: true,
         }
     }
 }
@@ -240,6 +252,23 @@ const SECANT_PROBE: f64 = 1e-3;
 /// largest shift of the coarse rung measured (7e-5), so that the pair straddles V_stick.
 const TIGHT_PAIR_HALF_WIDTH: f64 = 1.5e-4;
 
+/// Widest bracket (relative) between two full-tolerance collisions whose rebound states are
+/// interpolated to start a collision in between at its rebound
+/// ([`dynamics::Collider::collide_from`]) instead of at first contact. The interpolation error
+/// of the state is about 0.1 w^2 relative (measured near the thresholds of CO2 and H2O,
+/// `docs/performance.md`, "Rebound restarts"): 1e-8 at this width, a twentieth of the solver's
+/// own error at the search tolerance (2e-7). A coarse rung allows `sqrt(shift)`, where the
+/// interpolation error is a tenth of its shift ([`restart_width`]).
+const RESTART_MAX_WIDTH: f64 = 3.2e-4;
+
+/// The widest bracket of collisions on `rung` whose rebounds are interpolated (relative): see
+/// [`RESTART_MAX_WIDTH`].
+fn restart_width(rung: usize) -> f64 {
+    LADDER
+        .get(rung)
+        .map_or(RESTART_MAX_WIDTH, |&(_, shift)| shift.sqrt())
+}
+
 /// Absolute tolerance of a rung, relative to its rtol (the states are of order one).
 const ATOL_OVER_RTOL: f64 = 1e-3;
 
@@ -254,6 +283,8 @@ struct Seen {
     /// The rung of the tolerance ladder it was integrated on ([`LADDER`]`.len()` is the
     /// search's own solver settings).
     rung: usize,
+    /// Its state where delta first returned to zero, if it did.
+    rebound: Option<Rebound>,
 }
 
 /// A transition between two classes of outcomes: the fastest speed below it and the slowest
@@ -363,8 +394,19 @@ impl Search<'_> {
 
     /// Integrates impact speeds, each on its rung, two at a time (concurrently when asked).
     fn round(&mut self, jobs: &[(f64, usize)]) -> Result<(), ThresholdsError> {
-        let one = |(v, rung): (f64, usize)| self.colliders[rung].collide(v).map(|c| (v, rung, c));
-        let results = match jobs {
+        let jobs: Vec<(f64, usize, Option<Rebound>)> = jobs
+            .iter()
+            .map(|&(v, rung)| (v, rung, self.restart_from(v, rung)))
+            .collect();
+        let one = |(v, rung, from): (f64, usize, Option<Rebound>)| {
+            let collider = &self.colliders[rung];
+            match from {
+                Some(r) => collider.collide_from(v, &r),
+                None => collider.collide(v),
+            }
+            .map(|c| (v, rung, c))
+        };
+        let results = match jobs.as_slice() {
             [a, b] if self.opts.parallel => {
                 let (x, y) = rayon::join(|| one(*a), || one(*b));
                 vec![x, y]
@@ -378,9 +420,34 @@ impl Search<'_> {
                 outcome: c.outcome,
                 v_out: c.v_out,
                 rung,
+                rebound: c.rebound,
             });
         }
         Ok(())
+    }
+
+    /// The rebound to start a collision at `v` on `rung` from: interpolated between the nearest
+    /// collisions of that rung below and above `v` when both rebounded and lie within
+    /// [`restart_width`] of each other; `None` (integrate from first contact) otherwise.
+    fn restart_from(&self, v: f64, rung: usize) -> Option<Rebound> {
+        if !self.opts.restarts {
+            return None;
+        }
+        let same = || {
+            self.seen
+                .iter()
+                .filter(move |p| p.rung == rung && p.rebound.is_some())
+        };
+        let below = same()
+            .filter(|p| p.v < v)
+            .max_by(|a, b| a.v.total_cmp(&b.v))?;
+        let above = same()
+            .filter(|p| p.v > v)
+            .min_by(|a, b| a.v.total_cmp(&b.v))?;
+        if above.v - below.v > restart_width(rung) * above.v {
+            return None;
+        }
+        Rebound::between(&below.rebound?, &above.rebound?, v)
     }
 
     /// Stage 1: a sticking speed below both transitions and, unless nothing bounces up to

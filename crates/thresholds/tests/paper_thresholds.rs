@@ -275,6 +275,35 @@ fn parallel_rounds_are_deterministic() {
     assert_eq!(a, run(true));
 }
 
+/// Starting collisions at their rebound (interpolated between close neighbours) instead of at
+/// first contact moves V_stick by less than 1e-7 relative and the onset (the centre of a bracket
+/// of relative width 1e-6) by less than the bracket, at T_vis where Tsit45 (1e-9 s) and BDF
+/// (1e-14 s) integrate. `docs/performance.md`, "Rebound restarts".
+#[test]
+fn rebound_restarts_keep_the_thresholds() {
+    let c = co2(60e-6);
+    let law = law();
+    for t_vis in [1e-9, 1e-14] {
+        let run = |restarts: bool| {
+            let opts = SearchOptions {
+                restarts,
+                ..Default::default()
+            };
+            sticking_thresholds(&c, &law, t_vis, &opts).unwrap()
+        };
+        let (on, off) = (run(true), run(false));
+        let rel = |a: Option<f64>, b: Option<f64>| (a.unwrap() / b.unwrap() - 1.0).abs();
+        assert!(
+            rel(on.v_stick, off.v_stick) < 1e-7,
+            "T_vis {t_vis}: {on:?} {off:?}"
+        );
+        assert!(
+            rel(on.v_double_onset, off.v_double_onset) < 1e-6,
+            "T_vis {t_vis}: {on:?} {off:?}"
+        );
+    }
+}
+
 /// A sweep seeded by its neighbours finds the same thresholds (within the search tolerance)
 /// with fewer collisions; a wrong hint costs collisions, not accuracy.
 #[test]
