@@ -12,14 +12,20 @@
 //! [`STENCIL`]` - 1` on the (non-uniform) zeta nodes is accurate to better than 1e-8 relative in v
 //! (measured by the `crack_law` tests against direct evaluation between the nodes). The
 //! interpolants are stored as Newton divided differences per interval and found through a uniform
-//! bucket index, so an evaluation is a few dozen flops, two logarithms and one exponential.
+//! bucket index, so an evaluation is a few dozen flops, a logarithm and an exponential.
+//!
+//! The solvers call [`CrackLaw::speed_unchecked`] millions of times, so each branch also keeps a
+//! second representation of the same table: |v| as cubic Hermite cells in `r = e^zeta`, 128 per
+//! octave of r, indexed by the bits of r (no logarithm, no exponential) and filled from the table
+//! the first time a trajectory enters an octave (about 0.01 ms each). It follows the table to
+//! 1e-9 relative ([`FAST_BITS`]).
 //! Outside the table (alpha beyond its range) w is extrapolated linearly, which keeps v and its
 //! derivative finite, monotone and of the right sign up to the bounds.
 
 use crate::integrals::JIntegrals;
-use crate::law::{check_beta, check_k, zeta_of_beta, Branch, CrackPoint};
+use crate::law::{check_beta, check_k, Branch, CrackPoint};
 use crate::GreenwoodError;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 pub use crate::quad::{ALPHA_MAX, ALPHA_MIN, LN_ALPHA_STEP};
 
@@ -138,22 +144,109 @@ impl BranchTable {
     }
 }
 
+/// Cells per octave of `r` in a [`FastBranch`]: 2^7 = 128, so that a cell spans 0.0078 in zeta
+/// and the cubic Hermite interpolant of |v| in it follows the table to 1e-9 relative, a tenth of
+/// the table's own error (4e-9 in the one cell across each end node of the table, where its slope
+/// jumps to the linear extrapolation; test `fast_cells_reproduce_the_table`).
+const FAST_BITS: u32 = 7;
+/// Smallest octave of `r` a [`FastBranch`] covers, `r >= 2^FAST_MIN_EXP` (about 3.6e-15, beta
+/// within 4e-15 of 1 at most: trajectories sit at |beta - 1| ~ 1/lambda > 1e-10); smaller `r`
+/// goes through the table directly.
+const FAST_MIN_EXP: i32 = -48;
+/// One past the largest octave, `r < 2^FAST_MAX_EXP` (about 1.7e7: beta within 6e-8 (1 - k) of
+/// k or 1/k, beyond the start and the end of every contact); larger `r` goes through the table.
+const FAST_MAX_EXP: i32 = 24;
+
+/// A second, faster representation of one branch: |v| as a cubic Hermite interpolant in
+/// `r = |beta - 1| / (distance of beta to its bound)` (so `zeta = ln r`) on cells uniform within
+/// each octave of r, found from the bits of r: no logarithm, no exponential. Its nodes are values
+/// and slopes of the table itself, computed the first time a trajectory enters an octave.
+#[derive(Debug)]
+struct FastBranch {
+    /// Per octave, `2^FAST_BITS` cells of coefficients `[c0, c1, c2, c3]` of |v| in the cell's
+    /// local variable `t = (r - r0) / h` in [0, 1).
+    octaves: Vec<OnceLock<Box<[[f64; 4]]>>>,
+}
+
+impl FastBranch {
+    fn new() -> Self {
+        let n = (FAST_MAX_EXP - FAST_MIN_EXP) as usize;
+        Self {
+            octaves: (0..n).map(|_| OnceLock::new()).collect(),
+        }
+    }
+
+    /// `(|v|, d|v|/dr)` at `r`, or `None` outside the octaves covered.
+    #[inline]
+    fn eval(&self, r: f64, table: &BranchTable) -> Option<(f64, f64)> {
+        let bits = r.to_bits();
+        // biased exponent of r; r > 0 and finite here (NaN and infinities fall outside)
+        let biased = (bits >> 52) as i64;
+        let octave = biased - 1023 - FAST_MIN_EXP as i64;
+        let cells = self.octaves.get(usize::try_from(octave).ok()?)?;
+        let cells = cells.get_or_init(|| Self::octave(biased, table));
+        let shift = 52 - FAST_BITS;
+        let j = ((bits >> shift) & ((1 << FAST_BITS) - 1)) as usize;
+        // r0: r with the mantissa bits below the cell index cleared; h = 2^(e - FAST_BITS)
+        let r0 = f64::from_bits((bits >> shift) << shift);
+        let inv_h = f64::from_bits(((2046 - biased + FAST_BITS as i64) as u64) << 52);
+        let t = (r - r0) * inv_h;
+        let [c0, c1, c2, c3] = cells[j];
+        let f = c0 + t * (c1 + t * (c2 + t * c3));
+        let df_dt = c1 + t * (2.0 * c2 + 3.0 * t * c3);
+        Some((f, df_dt * inv_h))
+    }
+
+    /// The cells of the octave with biased exponent `biased`, from the table's values and slopes
+    /// at the cell edges.
+    fn octave(biased: i64, table: &BranchTable) -> Box<[[f64; 4]]> {
+        let n = 1usize << FAST_BITS;
+        let base = f64::from_bits((biased as u64) << 52);
+        let h = base / n as f64;
+        // |v| and d|v|/dt (t in cell units) at each edge
+        let edges: Vec<(f64, f64)> = (0..=n)
+            .map(|j| {
+                let r = base + j as f64 * h;
+                let (w, dw) = table.eval(r.ln());
+                let f = w.exp();
+                (f, f * dw / r * h)
+            })
+            .collect();
+        edges
+            .windows(2)
+            .map(|e| {
+                let ((f0, d0), (f1, d1)) = (e[0], e[1]);
+                [
+                    f0,
+                    d0,
+                    3.0 * (f1 - f0) - 2.0 * d0 - d1,
+                    2.0 * (f0 - f1) + d0 + d1,
+                ]
+            })
+            .collect()
+    }
+}
+
 /// Greenwood's crack law `v(k, beta)` for one k, evaluated by table interpolation.
 ///
 /// Build it once per k (0.17 ms: the quadratures were done at build time) and share it:
-/// evaluation is a bucket lookup and a small polynomial in Newton form (about 30 ns). The tables
-/// sit behind an [`Arc`], so a clone (or `CrackLaw::from(&law)`) shares them instead of copying.
+/// evaluation is a cubic polynomial in a cell found from the bits of its argument (the first
+/// visit of an octave fills that octave's cells from the table). The tables sit behind an
+/// [`Arc`], so a clone (or `CrackLaw::from(&law)`) shares them, with the cells filled so far,
+/// instead of copying.
 #[derive(Debug, Clone)]
 pub struct CrackLaw {
     k: f64,
     tables: Arc<Tables>,
 }
 
-/// The two branches' tables of one k.
+/// The two branches' tables of one k, each with its fast representation.
 #[derive(Debug)]
 struct Tables {
     closing: BranchTable,
     opening: BranchTable,
+    closing_fast: FastBranch,
+    opening_fast: FastBranch,
 }
 
 impl From<&CrackLaw> for CrackLaw {
@@ -204,6 +297,8 @@ impl CrackLaw {
             tables: Arc::new(Tables {
                 closing: BranchTable::from_points(closing),
                 opening: BranchTable::from_points(opening),
+                closing_fast: FastBranch::new(),
+                opening_fast: FastBranch::new(),
             }),
         })
     }
@@ -263,36 +358,79 @@ impl CrackLaw {
                 dv_dbeta: 0.0,
             };
         }
-        let (branch, zeta) = zeta_of_beta(k, beta);
-        match branch {
-            Branch::Closing => {
-                let (w, dw) = self.tables.closing.eval(zeta);
-                let v = w.exp();
-                // zeta = ln(1 - beta) - ln(beta - k)
-                let dzeta = -1.0 / (1.0 - beta) - 1.0 / (beta - k);
-                CrackSpeed {
-                    v,
-                    dv_dbeta: v * dw * dzeta,
-                }
-            }
-            Branch::Opening => {
-                let (w, dw) = self.tables.opening.eval(zeta);
-                let v = -w.exp();
-                // zeta = ln(beta - 1) - ln(1/k - beta)
-                let dzeta = 1.0 / (beta - 1.0) + 1.0 / (1.0 / k - beta);
-                CrackSpeed {
-                    v,
-                    dv_dbeta: v * dw * dzeta,
-                }
-            }
+        // r = |beta - 1| / (distance to the branch's bound), zeta = ln r (see `crate::law::zeta_of_beta`)
+        let (branch, r, dr_dbeta) = if beta < 1.0 {
+            let d = beta - k;
+            (Branch::Closing, (1.0 - beta) / d, -(1.0 - k) / (d * d))
+        } else {
+            let d = 1.0 / k - beta;
+            (Branch::Opening, (beta - 1.0) / d, (1.0 / k - 1.0) / (d * d))
+        };
+        let (table, fast, sign) = match branch {
+            Branch::Closing => (&self.tables.closing, &self.tables.closing_fast, 1.0),
+            Branch::Opening => (&self.tables.opening, &self.tables.opening_fast, -1.0),
+        };
+        let (f, df_dr) = fast.eval(r, table).unwrap_or_else(|| {
+            let (w, dw) = table.eval(r.ln());
+            let f = w.exp();
+            (f, f * dw / r)
+        });
+        CrackSpeed {
+            v: sign * f,
+            dv_dbeta: sign * df_dr * dr_dbeta,
         }
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::J_NODES;
+    use super::{CrackLaw, FAST_BITS, FAST_MAX_EXP, FAST_MIN_EXP, J_NODES};
     use crate::quad::{j3_complement_log_term, node_alpha, node_count};
+
+    /// The fast representation reproduces the table it interpolates: |v| within 1e-9 relative
+    /// and d|v|/dr within 1e-5 (the table's own slope accuracy) over every octave it covers (cubic Hermite error, about
+    /// (cell width in zeta)^4 / 384 times the curvature), sampled off the cell edges; within
+    /// 1e-8 in the cells across the table's end nodes, where its slope jumps.
+    #[test]
+    fn fast_cells_reproduce_the_table() {
+        for k in [0.005, 0.01, 0.3] {
+            let law = CrackLaw::new(k).unwrap();
+            let t = &law.tables;
+            for (table, fast) in [(&t.closing, &t.closing_fast), (&t.opening, &t.opening_fast)] {
+                let (mut worst, mut worst_slope) = (0.0f64, 0.0f64);
+                for e in FAST_MIN_EXP..FAST_MAX_EXP {
+                    for i in 0..(3 << FAST_BITS) {
+                        let r = 2f64.powi(e) * (1.0 + (i as f64 + 0.37) / (3 << FAST_BITS) as f64);
+                        let (f, df) = fast.eval(r, table).unwrap();
+                        let (w, dw) = table.eval(r.ln());
+                        let (g, dg) = (w.exp(), w.exp() * dw / r);
+                        // the table's first and last nodes are kinks (linear extrapolation
+                        // beyond them); a cell across one is held to the table's own 1e-8
+                        let h = 2f64.powi(e - FAST_BITS as i32);
+                        let ends = [table.zeta[0], table.zeta[table.zeta.len() - 1]];
+                        let kink = ends.iter().any(|z| (z.exp() - r).abs() < h);
+                        let err = (f / g - 1.0).abs();
+                        assert!(err < 1e-8, "k = {k}, r = {r:e}: {err:e}");
+                        if !kink {
+                            worst = worst.max(err);
+                        }
+                        worst_slope = worst_slope.max(((df - dg) / dg).abs());
+                    }
+                }
+                assert!(worst < 1e-9, "k = {k}: {worst:e}");
+                assert!(worst_slope < 1e-5, "k = {k}: slope {worst_slope:e}");
+            }
+            // outside the octaves covered, the table itself answers
+            assert!(t
+                .closing_fast
+                .eval(2f64.powi(FAST_MAX_EXP), &t.closing)
+                .is_none());
+            assert!(t
+                .closing_fast
+                .eval(2f64.powi(FAST_MIN_EXP - 1), &t.closing)
+                .is_none());
+        }
+    }
 
     /// The build-time table holds exactly what the quadrature gives now.
     #[test]
