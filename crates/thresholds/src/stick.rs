@@ -235,8 +235,9 @@ const LADDER: [(f64, f64); 3] = [(1e-4, 2e-3), (1e-5, 1.5e-4), (1e-7, 3e-6)];
 /// where the final check at full tolerance finds it.
 const LADDER_MARGIN: f64 = 4.0;
 
-/// The rung of the coarse secant steps on V_out: 1e-5, a third of the cost of full tolerance,
-/// and V_out accurate to about 1e-5.
+/// The rung of the coarse secant steps on V_out once the bracket is narrower than the coarsest
+/// rung allows ([`Search::rung_for`]): 1e-5, a third of the cost of full tolerance, and V_out
+/// accurate to about 1e-5. While the bracket is wider, the coarsest rung trisects it.
 const COARSE_SECANT_RUNG: usize = 1;
 /// Coarse steps on V_out at most (trisection until a secant root falls inside the bracket, then
 /// secant steps), before the full-tolerance pairs take over: trisecting a bracket of a factor 1.5
@@ -531,9 +532,10 @@ impl Search<'_> {
             return Ok(Vec::new());
         }
         let tight = self.tight();
-        let coarse = COARSE_SECANT_RUNG;
         if !self.stick.settled {
             if let (Some(lo), Some(hi)) = self.bracket(bouncing) {
+                // the coarsest rung the bracket allows, at most the secant rung
+                let coarse = self.rung_for((hi.v - lo.v) / hi.v).min(COARSE_SECANT_RUNG);
                 if hi.v - lo.v > TIGHT_PAIR_HALF_WIDTH * hi.v
                     && self.stick.coarse_steps < MAX_COARSE_SECANT_STEPS
                 {
@@ -580,6 +582,20 @@ impl Search<'_> {
                 if hi.v - lo.v <= self.opts.rel_tol * hi.v {
                     return Ok(Vec::new());
                 }
+                if let Some((a, b)) = self.bouncing_roots(tight) {
+                    // just outside the two estimates, inside the bracket
+                    let mut below = a * (1.0 - eps);
+                    if below <= lo.v {
+                        below = 0.5 * (lo.v + b.min(hi.v));
+                    }
+                    let mut above = b * (1.0 + eps);
+                    if above >= hi.v {
+                        above = 0.5 * (a.max(lo.v) + hi.v);
+                    }
+                    if below < above {
+                        return Ok(vec![(below, tight), (above, tight)]);
+                    }
+                }
                 let root = self.v_out_root(tight).filter(|q| *q > lo.v && *q < hi.v);
                 match root {
                     Some(q) => {
@@ -619,6 +635,32 @@ impl Search<'_> {
         let half = self.stick.half_width;
         let p = p.min(self.v_max / (1.0 + half));
         Ok(vec![(p * (1.0 - half), tight), (p * (1.0 + half), tight)])
+    }
+
+    /// Two estimates of V_stick that bracket it, from the two bouncing speeds on `rung` nearest
+    /// to it when no double collision is nearer: V_out falls to zero between linearly (the secant
+    /// of V_out is exact) and like a square root of V_in - V_stick (the JKR limit, where
+    /// V_out^2 = V_in^2 - V_stick^2 and the secant of V_out^2 is exact); for a shape in between,
+    /// the first root lies below V_stick and the second above. `None` otherwise.
+    fn bouncing_roots(&self, rung: usize) -> Option<(f64, f64)> {
+        let mut pts: Vec<Seen> = self
+            .seen
+            .iter()
+            .filter(|p| not_sticking(p.outcome) && p.rung >= rung)
+            .copied()
+            .collect();
+        pts.sort_by(|a, b| a.v_out.abs().total_cmp(&b.v_out.abs()));
+        let [a, b, ..] = pts.as_slice() else {
+            return None;
+        };
+        if !(bouncing(a.outcome) && bouncing(b.outcome)) || a.v == b.v || a.v_out == b.v_out {
+            return None;
+        }
+        let linear = a.v - a.v_out * (b.v - a.v) / (b.v_out - a.v_out);
+        let (a2, b2) = (a.v_out * a.v_out, b.v_out * b.v_out);
+        let square = a.v - a2 * (b.v - a.v) / (b2 - a2);
+        let (lo, hi) = (linear.min(square), linear.max(square));
+        (lo.is_finite() && hi.is_finite() && lo > 0.0 && hi < self.v_max).then_some((lo, hi))
     }
 
     /// The bracket of a transition from full-tolerance collisions only.
