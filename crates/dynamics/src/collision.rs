@@ -16,7 +16,10 @@
 //!    [`SolverOptions::max_oscillations`] full oscillations after the first compression (maxima of
 //!    delta while still in contact) has already failed to separate on an outward swing with more
 //!    energy than any later one has; it is declared sticking. The tests show that the transitions
-//!    do not move when this number is changed.
+//!    do not move when this number is changed. The decision comes as soon as the last of these
+//!    oscillations is certain: once the spheres approach again with the crack advancing
+//!    (beta < 1), beta cannot reach 1 before the maximum of delta (at beta = 1 the crack stops
+//!    and the approach lowers beta), so the contact cannot end before it.
 //!
 //! # Continuing from the rebound
 //! The equations are autonomous, so a collision is determined by its state at any point. Each
@@ -205,7 +208,8 @@ impl Outcome {
 pub enum StickingCriterion {
     /// The energy fell below the end-of-contact bound (rigorous).
     EnergyBound,
-    /// The contact completed the allowed number of oscillations.
+    /// The contact completed the allowed number of oscillations, or is bound to complete the
+    /// last of them (approaching with the crack advancing).
     Oscillations,
 }
 
@@ -332,6 +336,18 @@ struct Start {
     max_increase: f64,
     /// The rebound it starts from (kept in the result), if any.
     rebound: Option<Rebound>,
+}
+
+/// Whether a contact in state `u` is bound to stay in contact up to the next maximum of delta:
+/// the spheres approach (`p > 0`) and the crack advances (`beta < 1`, with `q = 3x^2 - y > 0`).
+/// Along such a state beta cannot reach 1 before p does 0: at beta = 1 the crack stops (v = 0)
+/// and `d beta/dtau = (d beta/dy) p = -q p / (2x) < 0`. So beta stays below 1, far from the end
+/// of contact at beta_end, until the maximum of delta, where the oscillation criterion decides
+/// sticking anyway; deciding here gives the same outcome, earlier.
+fn bound_to_next_maximum(u: &[f64; NSTATES]) -> bool {
+    let (x, y, p) = (u[0], u[1], u[2]);
+    let q = 3.0 * x * x - y;
+    p > 0.0 && x > 0.0 && q > 0.0 && model::beta(x, y) < 1.0
 }
 
 /// Secant (Illinois) iterations that place a rebound on delta = 0 inside the step that crossed it.
@@ -824,7 +840,9 @@ impl Collider {
                 None
             } else if energy < threshold {
                 Some(StickingCriterion::EnergyBound)
-            } else if maxima > opts.max_oscillations {
+            } else if maxima > opts.max_oscillations
+                || (maxima == opts.max_oscillations && bound_to_next_maximum(&u))
+            {
                 Some(StickingCriterion::Oscillations)
             } else {
                 None

@@ -329,6 +329,38 @@ fn sticking_criteria() {
     );
 }
 
+/// The oscillation criterion decides as soon as the spheres approach again with the crack
+/// advancing (beta < 1), before the next maximum of delta: from there the contact cannot end
+/// before that maximum. Checked by integrating on: with the decision held back to three times
+/// its time (`decide_after`), each of these collisions, just below the onset of double
+/// collisions where the contact comes closest to ending, still sticks.
+#[test]
+fn early_oscillation_decision_is_the_outcome() {
+    let law = law();
+    // (T_vis, V_in just below the onset: 2e-5 and 1e-6 relative below it at rtol 1e-9)
+    for (t_vis, v_in) in [
+        (1e-9, 0.040302),
+        (1e-9, 0.0403032),
+        (1e-12, 0.0166585),
+        (1e-14, 0.01659740),
+    ] {
+        let col = Collider::new(co2_60um(), &law, t_vis).unwrap();
+        let early = col.collide(v_in).unwrap();
+        assert_eq!(early.outcome, Outcome::Sticking, "T_vis {t_vis} V {v_in}");
+        assert_eq!(
+            early.sticking_criterion,
+            Some(StickingCriterion::Oscillations)
+        );
+        let opts = SolverOptions {
+            decide_after: 3.0 * early.decided_at,
+            ..Default::default()
+        };
+        let late = col.with_options(opts).unwrap().collide(v_in).unwrap();
+        assert_eq!(late.outcome, Outcome::Sticking, "T_vis {t_vis} V {v_in}");
+        assert!(late.decided_at >= opts.decide_after);
+    }
+}
+
 /// Section 2.6: the trajectory starts at delta = 0, delta_dot = V_in, beta = (1 + eps) k and a
 /// bouncing one ends at beta = (1 - eps)/k.
 #[test]
