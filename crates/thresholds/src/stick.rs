@@ -50,9 +50,13 @@ pub const DEFAULT_V_MAX_OVER_JKR: f64 = 1e3;
 /// First lower trial, in units of V_stick,JKR: V_stick >= V_stick,JKR for every T_vis > 0, so a
 /// speed just below it almost always sticks.
 const FIRST_LOWER_OVER_JKR: f64 = 0.99;
-/// First upper trial, in units of the first lower one: V_stick is within 1.6 V_stick,JKR for
-/// T_vis up to about 1e-10 s (Figure 4), so one round often brackets it.
-const FIRST_UPPER_OVER_LOWER: f64 = 1.6;
+/// First upper trial, in units of the first lower one (so 1.02 V_stick,JKR): V_stick is within
+/// 2 % of V_stick,JKR for T_vis up to about 1e-12 s (CO2 60 um, Figure 4), where collisions are
+/// stiff and dearest, and one round brackets it; above, the growth steps of [`UPPER_GROWTH`] find
+/// bouncing in about as many rounds as a first trial of 1.6 did. Measured with
+/// `v_stick_once` over T_vis = 1e-16..1e-8 s: 10-17 % fewer instructions at 1e-16..1e-12 s,
+/// 1-3 % more at 1e-11..1e-8 s (`docs/performance.md`, item 17).
+const FIRST_UPPER_OVER_LOWER: f64 = 1.03;
 /// A hinted search first tries 10 % below the hinted onset and 10 % above the hinted V_stick,
 /// on the coarsest rung: wide enough to bracket both transitions when the hint, extrapolated
 /// from two neighbours, is a few per cent off, and cheap there.
