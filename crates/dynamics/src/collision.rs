@@ -33,8 +33,7 @@ use crate::scales::Scales;
 use crate::DynamicsError;
 use contact::Contact;
 use diffsol::{
-    FaerLU, FaerMat, NalgebraLU, NalgebraMat, OdeBuilder, OdeEquations, OdeSolverMethod,
-    OdeSolverStopReason, Vector,
+    FaerLU, FaerMat, NalgebraLU, NalgebraMat, OdeBuilder, OdeEquations, OdeSolverMethod, Vector,
 };
 use greenwood::{CrackLaw, OutOfRange};
 
@@ -350,8 +349,10 @@ fn bound_to_next_maximum(u: &[f64; NSTATES]) -> bool {
     p > 0.0 && x > 0.0 && q > 0.0 && model::beta(x, y) < 1.0
 }
 
-/// Secant (Illinois) iterations that place a rebound on delta = 0 inside the step that crossed it.
-const REBOUND_ITERATIONS: usize = 8;
+/// Secant (Illinois) iterations that place the end of contact (beta = beta_end) or the rebound
+/// (delta = 0) inside the step that crossed it: Illinois converges superlinearly, so 12 reach the
+/// last bits of the pseudo-time.
+const CROSSING_ITERATIONS: usize = 12;
 
 /// Integrates collisions of one contact at one relaxation time.
 ///
@@ -561,7 +562,6 @@ impl Collider {
         let u0 = start.u;
         let params = self.params;
         let law: &CrackLaw = &self.law;
-        let beta_end = self.beta_end;
         let opts = &self.options;
         // The same problem for either linear-algebra backend.
         macro_rules! integrate {
@@ -584,12 +584,6 @@ impl Collider {
                     .init(
                         move |_p: &[f64], _s: f64, y: &mut [f64]| y.copy_from_slice(&u0),
                         NSTATES,
-                    )
-                    .root(
-                        move |u: &[f64], _p: &[f64], _s: f64, out: &mut [f64]| {
-                            out[0] = model::beta(u[0], u[1]) - beta_end
-                        },
-                        1,
                     )
                     .build()
                     .map_err(|e| self.solver_error(v_in, e))?;
@@ -649,57 +643,52 @@ impl Collider {
         }
     }
 
-    /// The state where delta crosses zero inside the last step, `(s0, y0)` to `(s1, y1)` with
-    /// `y0 > 0 >= y1`, from the solver's dense output (Illinois iterations on y); the rebound's
-    /// `maxima`, `beta_max` and `max_increase` are left for the caller. `None` if the dense
-    /// output fails.
-    fn locate_rebound<'s, Eqn, S>(
+    /// The state where `g` crosses zero inside the last step, from `(s0, g0)` to `(s1, g1)`
+    /// (values of opposite signs, or `g1 = 0`), from the solver's dense output (Illinois
+    /// iterations on g). `None` if the dense output fails.
+    fn crossing<'s, Eqn, S>(
         &self,
         solver: &S,
-        v_in: f64,
-        (mut s0, mut y0): (f64, f64),
-        (mut s1, mut y1): (f64, f64),
-    ) -> Option<Rebound>
+        g: impl Fn(&[f64; NSTATES]) -> f64,
+        (mut s0, mut g0): (f64, f64),
+        (mut s1, mut g1): (f64, f64),
+    ) -> Option<[f64; NSTATES]>
     where
         Eqn: OdeEquations<T = f64> + 's,
         S: OdeSolverMethod<'s, Eqn>,
     {
-        let mut at = (s1, y1);
+        let state = |s: f64| -> Option<[f64; NSTATES]> {
+            let v = solver.interpolate(s).ok()?;
+            let mut u = [0.0; NSTATES];
+            for (i, ui) in u.iter_mut().enumerate() {
+                *ui = v.get_index(i);
+            }
+            Some(u)
+        };
+        let mut at = state(s1)?;
         let mut side = 0i8;
-        for _ in 0..REBOUND_ITERATIONS {
-            if y1 == 0.0 || s1 - s0 <= f64::EPSILON * s1.abs() {
+        for _ in 0..CROSSING_ITERATIONS {
+            if g1 == 0.0 || g0 == 0.0 || (s1 - s0).abs() <= f64::EPSILON * s1.abs() {
                 break;
             }
-            let s = s1 - y1 * (s1 - s0) / (y1 - y0);
-            let y = solver.interpolate(s).ok()?.get_index(1);
-            at = (s, y);
-            if y > 0.0 {
-                (s0, y0) = (s, y);
+            let s = s1 - g1 * (s1 - s0) / (g1 - g0);
+            at = state(s)?;
+            let f = g(&at);
+            if (f > 0.0) == (g0 > 0.0) {
+                (s0, g0) = (s, f);
                 if side == 1 {
-                    y1 *= 0.5;
+                    g1 *= 0.5;
                 }
                 side = 1;
             } else {
-                (s1, y1) = (s, y);
+                (s1, g1) = (s, f);
                 if side == -1 {
-                    y0 *= 0.5;
+                    g0 *= 0.5;
                 }
                 side = -1;
             }
         }
-        let v = solver.interpolate(at.0).ok()?;
-        let mut u = [0.0; NSTATES];
-        for (i, ui) in u.iter_mut().enumerate() {
-            *ui = v.get_index(i);
-        }
-        Some(Rebound {
-            v_in,
-            u,
-            h: solver.state().h,
-            maxima: 0,
-            beta_max: 0.0,
-            max_increase: 0.0,
-        })
+        Some(at)
     }
 
     fn solver_error(&self, v_in: f64, e: impl std::fmt::Display) -> DynamicsError {
@@ -777,15 +766,28 @@ impl Collider {
         if opts.record_trajectory {
             trajectory.push(self.point(&u));
         }
+        let mut beta_prev = model::beta(u[0], u[1]);
         for step in 1..=max_steps {
-            let reason = solver
+            solver
                 .step()
                 .map_err(|e| self.solver_error_at(v_in, &u, e))?;
-            if let OdeSolverStopReason::RootFound(s_root, _) = reason {
-                let y = solver
-                    .interpolate(s_root)
-                    .map_err(|e| self.solver_error_at(v_in, &u, e))?;
-                let end = read(&y);
+            let y_prev = u[1];
+            let u_step = read(solver.state().y);
+            let s_now = solver.state().t;
+            let beta_now = model::beta(u_step[0], u_step[1]);
+            if beta_now >= self.beta_end {
+                // the contact ended inside this step: where beta = beta_end, from the dense output
+                let g = |v: &[f64; NSTATES]| model::beta(v[0], v[1]) - self.beta_end;
+                let end = self
+                    .crossing(
+                        solver,
+                        g,
+                        (s_prev, beta_prev - self.beta_end),
+                        (s_now, beta_now - self.beta_end),
+                    )
+                    .ok_or_else(|| {
+                        self.solver_error_at(v_in, &u, "dense output failed at the end of contact")
+                    })?;
                 let e_end = model::energy(end[0], end[1], end[2]);
                 max_increase = max_increase.max(e_end - e_prev);
                 let end_point = self.point(&end);
@@ -813,9 +815,9 @@ impl Collider {
                     rebound,
                 });
             }
-            let y_prev = u[1];
-            u = read(solver.state().y);
-            beta_max = beta_max.max(model::beta(u[0], u[1]));
+            beta_prev = beta_now;
+            u = u_step;
+            beta_max = beta_max.max(beta_now);
             let energy = model::energy(u[0], u[1], u[2]);
             max_increase = max_increase.max(energy - e_prev);
             e_prev = energy;
@@ -826,9 +828,17 @@ impl Collider {
                 maxima += 1;
             }
             p_prev = u[2];
-            let s_now = solver.state().t;
             if rebound.is_none() && y_prev > 0.0 && u[1] <= 0.0 && u[2] < 0.0 {
-                rebound = self.locate_rebound(solver, v_in, (s_prev, y_prev), (s_now, u[1]));
+                rebound = self
+                    .crossing(solver, |v| v[1], (s_prev, y_prev), (s_now, u[1]))
+                    .map(|u| Rebound {
+                        v_in,
+                        u,
+                        h: solver.state().h,
+                        maxima: 0,
+                        beta_max: 0.0,
+                        max_increase: 0.0,
+                    });
                 if let Some(r) = rebound.as_mut() {
                     r.maxima = maxima;
                     r.beta_max = beta_max;
