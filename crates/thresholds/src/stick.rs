@@ -91,8 +91,10 @@ pub struct SearchOptions {
     pub hint: Option<Hint>,
     /// Start a collision at its rebound, interpolated between two collisions close by on either
     /// side, instead of at first contact, where that is accurate (a third to a half of the
-    /// cost; [`dynamics::Collider::collide_from`]). It moves the thresholds by less than 1e-7
-    /// relative (`docs/performance.md`, "Rebound restarts"). Default on; off for a reference.
+    /// cost; [`dynamics::Collider::collide_from`]). It moves V_stick by less than 1e-7 relative
+    /// and the onset of double collisions (the centre of its final bracket) by less than that
+    /// bracket (`docs/performance.md`, "Rebound restarts" and "Accuracy"). Default on; off for a
+    /// reference.
     pub restarts: bool,
 }
 
