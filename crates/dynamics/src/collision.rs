@@ -35,6 +35,7 @@ use contact::Contact;
 use diffsol::{
     FaerLU, FaerMat, NalgebraLU, NalgebraMat, OdeBuilder, OdeEquations, OdeSolverMethod, Vector,
 };
+use greenwood::roots::{illinois, Illinois};
 use greenwood::{CrackLaw, OutOfRange};
 
 /// The fiducial eps = 0.01 of Section 2.6 (start at beta = (1 + eps) k, end at (1 - eps)/k).
@@ -349,10 +350,12 @@ fn bound_to_next_maximum(u: &[f64; NSTATES]) -> bool {
     p > 0.0 && x > 0.0 && q > 0.0 && model::beta(x, y) < 1.0
 }
 
-/// Secant (Illinois) iterations that place the end of contact (beta = beta_end) or the rebound
-/// (delta = 0) inside the step that crossed it: Illinois converges superlinearly, so 12 reach the
-/// last bits of the pseudo-time.
+/// Evaluations of the dense output that place the end of contact (beta = beta_end) or the
+/// rebound (delta = 0) inside the step that crossed it: Illinois converges superlinearly, so 12
+/// reach the last bits of the pseudo-time.
 const CROSSING_ITERATIONS: usize = 12;
+/// The crossing's bracket in pseudo-time is narrowed down to this many units in the last place.
+const CROSSING_ULPS: f64 = 4.0;
 
 /// Integrates collisions of one contact at one relaxation time.
 ///
@@ -644,14 +647,15 @@ impl Collider {
     }
 
     /// The state where `g` crosses zero inside the last step, from `(s0, g0)` to `(s1, g1)`
-    /// (values of opposite signs, or `g1 = 0`), from the solver's dense output (Illinois
-    /// iterations on g). `None` if the dense output fails.
+    /// (values of opposite signs, or `g1 = 0`), from the solver's dense output, by the
+    /// workspace's root finder ([`greenwood::roots::illinois`]). `None` if the dense output
+    /// fails.
     fn crossing<'s, Eqn, S>(
         &self,
         solver: &S,
         g: impl Fn(&[f64; NSTATES]) -> f64,
-        (mut s0, mut g0): (f64, f64),
-        (mut s1, mut g1): (f64, f64),
+        (s0, g0): (f64, f64),
+        (s1, g1): (f64, f64),
     ) -> Option<[f64; NSTATES]>
     where
         Eqn: OdeEquations<T = f64> + 's,
@@ -665,30 +669,18 @@ impl Collider {
             }
             Some(u)
         };
-        let mut at = state(s1)?;
-        let mut side = 0i8;
-        for _ in 0..CROSSING_ITERATIONS {
-            if g1 == 0.0 || g0 == 0.0 || (s1 - s0).abs() <= f64::EPSILON * s1.abs() {
-                break;
-            }
-            let s = s1 - g1 * (s1 - s0) / (g1 - g0);
-            at = state(s)?;
-            let f = g(&at);
-            if (f > 0.0) == (g0 > 0.0) {
-                (s0, g0) = (s, f);
-                if side == 1 {
-                    g1 *= 0.5;
-                }
-                side = 1;
-            } else {
-                (s1, g1) = (s, f);
-                if side == -1 {
-                    g0 *= 0.5;
-                }
-                side = -1;
-            }
-        }
-        Some(at)
+        let opts = Illinois {
+            x_tol: CROSSING_ULPS * f64::EPSILON * s1.abs(),
+            max_iter: CROSSING_ITERATIONS,
+            guard: 0.0,
+        };
+        let root = illinois(
+            |s| state(s).map(|u| g(&u)).ok_or(()),
+            (s0, g0),
+            (s1, g1),
+            &opts,
+        );
+        state(root.ok()?.best)
     }
 
     fn solver_error(&self, v_in: f64, e: impl std::fmt::Display) -> DynamicsError {

@@ -2,8 +2,9 @@
 //! falsi. (The threshold searches of `thresholds` classify outcomes, which jump, and keep their
 //! own secant and trisection steps on collisions.)
 //!
-//! Used for the crack-law inversion ([`crate::alpha_of_beta`], in `ln alpha`) and for the
-//! relaxation time that reproduces a measured V_stick (`thresholds::fit_t_vis`, in `ln T_vis`).
+//! Used for the crack-law inversion ([`crate::alpha_of_beta`], in `ln alpha`), for the
+//! relaxation time that reproduces a measured V_stick (`thresholds::fit_t_vis`, in `ln T_vis`),
+//! and for the end of contact and the rebound inside a solver step (`dynamics`, in pseudo-time).
 //! Regula falsi keeps a bracket `[lo, hi]` with `f(lo)` and `f(hi)` of opposite signs and tries
 //! the secant point; the Illinois rule halves the value kept at an end that survives twice in a
 //! row, which restores superlinear convergence where plain regula falsi stalls at one end.
