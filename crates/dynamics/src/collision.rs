@@ -25,8 +25,9 @@
 //! The equations are autonomous, so a collision is determined by its state at any point. Each
 //! collision records its state where delta first returns to zero on the way out
 //! ([`Collision::rebound`]); [`Collider::collide_from`] continues a collision from such a state,
-//! for instance one interpolated by [`Rebound::between`] from two collisions at nearby speeds.
-//! The threshold searches use this: outcomes are decided after the rebound.
+//! for instance one interpolated by [`Rebound::between`] from two collisions at nearby speeds:
+//! every outcome is decided after the rebound, so a scan over impact speeds can skip the
+//! compression of most of its collisions.
 
 use crate::model::{self, Params, NSTATES};
 use crate::scales::Scales;

@@ -649,17 +649,8 @@ impl Search<'_> {
     /// V_out^2 = V_in^2 - V_stick^2 and the secant of V_out^2 is exact); for a shape in between,
     /// the first root lies below V_stick and the second above. `None` otherwise.
     fn bouncing_roots(&self, rung: usize) -> Option<(f64, f64)> {
-        let mut pts: Vec<Seen> = self
-            .seen
-            .iter()
-            .filter(|p| not_sticking(p.outcome) && p.rung >= rung)
-            .copied()
-            .collect();
-        pts.sort_by(|a, b| a.v_out.abs().total_cmp(&b.v_out.abs()));
-        let [a, b, ..] = pts.as_slice() else {
-            return None;
-        };
-        if !(bouncing(a.outcome) && bouncing(b.outcome)) || a.v == b.v || a.v_out == b.v_out {
+        let (a, b) = self.nearest_to_v_out_zero(rung)?;
+        if !(bouncing(a.outcome) && bouncing(b.outcome)) {
             return None;
         }
         let linear = a.v - a.v_out * (b.v - a.v) / (b.v_out - a.v_out);
@@ -688,6 +679,15 @@ impl Search<'_> {
     /// among double collisions and bouncing integrated on `rung` or finer (extrapolated from
     /// the bouncing side while no double collision is known). `None` without two such speeds.
     fn v_out_root(&self, rung: usize) -> Option<f64> {
+        let (a, b) = self.nearest_to_v_out_zero(rung)?;
+        let p = a.v - a.v_out * (b.v - a.v) / (b.v_out - a.v_out);
+        (p.is_finite() && p > 0.0 && p < self.v_max).then_some(p)
+    }
+
+    /// The two double collisions or bouncing ones integrated on `rung` or finer with the
+    /// smallest |V_out|, nearest first; `None` without two such speeds of distinct V_in and
+    /// V_out (no secant through them).
+    fn nearest_to_v_out_zero(&self, rung: usize) -> Option<(Seen, Seen)> {
         let mut pts: Vec<Seen> = self
             .seen
             .iter()
@@ -695,14 +695,10 @@ impl Search<'_> {
             .copied()
             .collect();
         pts.sort_by(|a, b| a.v_out.abs().total_cmp(&b.v_out.abs()));
-        let [a, b, ..] = pts.as_slice() else {
-            return None;
-        };
-        if a.v_out == b.v_out || a.v == b.v {
-            return None;
+        match pts.as_slice() {
+            [a, b, ..] if a.v != b.v && a.v_out != b.v_out => Some((*a, *b)),
+            _ => None,
         }
-        let p = a.v - a.v_out * (b.v - a.v) / (b.v_out - a.v_out);
-        (p.is_finite() && p > 0.0 && p < self.v_max).then_some(p)
     }
 
     /// The next speeds (one or two) for the onset of double collisions; none when it is done.
