@@ -22,7 +22,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ..SolverOptions::default()
     };
     let norm = |u: [f64; 4]| u.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    println!("case | transition | w | interpolation error | steps full / continued");
+    println!("case | transition | w | interpolation error | C interpolated / extrapolated | steps full / continued");
     // (case, material, R1 (m), T_vis (s), V_stick, V_double_onset (m/s, from the search))
     for (name, material, radius, t_vis, v_stick, v_onset) in [
         (
@@ -75,9 +75,36 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     worst = worst.max(norm(diff) / norm(a));
                     steps = (full.steps, c.collide_from(mid, &r)?.steps);
                 }
+                // extrapolated beyond either end: the coefficient C of
+                // error = C |(v - v_lo)(v - v_hi)| / v^2, for interpolation and extrapolation
+                let mut coef = (0.0f64, 0.0f64);
+                for (offset, interpolated) in [
+                    (0.0, true),
+                    (0.3, true),
+                    (0.75, false),
+                    (1.5, false),
+                    (-0.75, false),
+                    (-1.5, false),
+                ] {
+                    let mid = v * (1.0 + offset * w);
+                    let (Some(own), Some(r)) =
+                        (c.collide(mid)?.rebound, Rebound::through(&ra, &rb, mid))
+                    else {
+                        continue;
+                    };
+                    let (a, b) = (own.state(), r.state());
+                    let diff = [a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]];
+                    let product = ((mid - ra.v_in()) * (mid - rb.v_in()) / (mid * mid)).abs();
+                    let k = norm(diff) / norm(a) / product;
+                    if interpolated {
+                        coef.0 = coef.0.max(k);
+                    } else {
+                        coef.1 = coef.1.max(k);
+                    }
+                }
                 println!(
-                    "{name} | {transition} | {w:.0e} | {worst:.1e} | {} / {}",
-                    steps.0, steps.1
+                    "{name} | {transition} | {w:.0e} | {worst:.1e} | {:.2} / {:.2} | {} / {}",
+                    coef.0, coef.1, steps.0, steps.1
                 );
             }
         }

@@ -267,17 +267,17 @@ fn continuing_from_the_rebound_reproduces_the_collision() {
             col.collide(v_in * (1.0 - 5e-5)),
             col.collide(v_in * (1.0 + 5e-5)),
         );
-        let between = Rebound::between(
-            &lo.unwrap().rebound.unwrap(),
-            &hi.unwrap().rebound.unwrap(),
-            v_in,
-        )
-        .unwrap();
+        let lo = lo.unwrap().rebound.unwrap();
+        let between = Rebound::between(&lo, &hi.unwrap().rebound.unwrap(), v_in).unwrap();
+        // from two speeds below, extrapolated by their spacing
+        let lower = col.collide(v_in * (1.0 - 1e-4)).unwrap().rebound.unwrap();
+        let beyond = Rebound::through(&lower, &lo, v_in).unwrap();
         assert!(own.time(col.scales()) < full.contact_time.unwrap());
         for (what, c) in [
             ("full", full.clone()),
             ("own rebound", col.collide_from(v_in, &own).unwrap()),
             ("interpolated", col.collide_from(v_in, &between).unwrap()),
+            ("extrapolated", col.collide_from(v_in, &beyond).unwrap()),
         ] {
             assert_eq!(c.outcome, reference.outcome, "T_vis {t_vis} {what}");
             assert!(
@@ -303,6 +303,13 @@ fn continuing_from_the_rebound_reproduces_the_collision() {
     assert_eq!(Rebound::between(&ra, &rb, 0.047), None);
     assert_eq!(Rebound::between(&ra, &rb, 0.045), None);
     assert!(Rebound::between(&rb, &ra, 0.0455).is_some());
+    // the line through two rebounds reaches beyond them, and reproduces each at its own speed
+    assert!(Rebound::through(&ra, &rb, 0.047).is_some());
+    assert_eq!(
+        Rebound::through(&ra, &rb, 0.045).unwrap().state(),
+        ra.state()
+    );
+    assert_eq!(Rebound::through(&ra, &ra, 0.047), None);
 }
 
 /// Sticking is proved by the energy bound when damping is strong; for weak damping the

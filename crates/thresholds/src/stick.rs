@@ -24,11 +24,13 @@
 //!    (accurate to the solver's tolerance, well inside the bracket), the onset the centre of its
 //!    final bracket.
 //!
-//! A collision whose speed lies between two collisions of the same rung close together (a
-//! relative width of at most [`RESTART_MAX_WIDTH`] on the last rung, wider on coarse ones) starts
-//! at its rebound, the state where delta returns to zero, interpolated between theirs
-//! ([`dynamics::Rebound`]), instead of at first contact: the outcome is decided after the rebound,
-//! and the part before it is a half to two thirds of the steps ([`SearchOptions::restarts`]).
+//! A collision whose speed lies close to two collisions of the same rung (between them, or just
+//! beyond, with an error of the line through them no larger than interpolating in a bracket of
+//! relative width [`RESTART_MAX_WIDTH`] on the last rung, wider on coarse ones) starts at its
+//! rebound, the state where delta returns to zero, interpolated or extrapolated from theirs
+//! ([`dynamics::Rebound`]), instead of at first contact: the outcome is decided after the
+//! rebound, and the part before it is a half to two thirds of the steps
+//! ([`SearchOptions::restarts`]).
 //!
 //! Each round integrates two impact speeds, on two threads when asked; the speeds depend only on
 //! the outcomes seen, so the result does not depend on the threads.
@@ -89,8 +91,9 @@ pub struct SearchOptions {
     /// just below `v_double_onset` and just above `v_stick` instead of bracketing from
     /// V_stick,JKR. A wrong hint costs one round, never the result. Default none.
     pub hint: Option<Hint>,
-    /// Start a collision at its rebound, interpolated between two collisions close by on either
-    /// side, instead of at first contact, where that is accurate (a third to a half of the
+    /// Start a collision at its rebound, interpolated between two collisions close by (or
+    /// extrapolated from two just beside it), instead of at first contact, where that is
+    /// accurate (a third to a half of the
     /// cost; [`dynamics::Collider::collide_from`]). It moves V_stick by less than 1e-7 relative
     /// and the onset of double collisions (the centre of its final bracket) by less than that
     /// bracket (`docs/performance.md`, "Rebound restarts" and "Accuracy"). Default on; off for a
@@ -259,16 +262,18 @@ const SECANT_PROBE: f64 = 1e-3;
 /// largest shift of the coarse rung measured (7e-5), so that the pair straddles V_stick.
 const TIGHT_PAIR_HALF_WIDTH: f64 = 1.5e-4;
 
-/// Widest bracket (relative) between two full-tolerance collisions whose rebound states are
-/// interpolated to start a collision in between at its rebound
-/// ([`dynamics::Collider::collide_from`]) instead of at first contact. The interpolation error
-/// of the state is about 0.1 w^2 relative (measured near the thresholds of CO2 and H2O,
-/// `docs/performance.md`, "Rebound restarts"): 1e-8 at this width, a twentieth of the solver's
-/// own error at the search tolerance (2e-7). A coarse rung allows `sqrt(shift)`, where the
-/// interpolation error is a tenth of its shift ([`restart_width`]).
+/// The rebound of a collision at the search tolerance is restarted from the line through two
+/// full-tolerance collisions whose rebounds are at most as far off as interpolating at the middle
+/// of a bracket of this relative width ([`Search::restart_from`]) instead of integrating it from
+/// first contact ([`dynamics::Collider::collide_from`]). The interpolation error of the state is
+/// about 0.36 |(v - v_a)(v - v_b)| / v^2 (0.09 w^2 at the middle of a bracket of relative width
+/// w; measured near the thresholds of CO2 and H2O, `docs/performance.md`, "Rebound restarts"):
+/// 1e-8 at this width, a twentieth of the solver's own error at the search tolerance (2e-7). A
+/// coarse rung allows `sqrt(shift)`, where the interpolation error is a tenth of its shift
+/// ([`restart_width`]).
 const RESTART_MAX_WIDTH: f64 = 3.2e-4;
 
-/// The widest bracket of collisions on `rung` whose rebounds are interpolated (relative): see
+/// The bracket width (relative) whose interpolation error bounds the restarts on `rung`: see
 /// [`RESTART_MAX_WIDTH`].
 fn restart_width(rung: usize) -> f64 {
     LADDER
@@ -381,7 +386,14 @@ impl Search<'_> {
 
     /// The bracket of the transition into the outcomes with `is_above`.
     fn bracket(&self, is_above: impl Fn(Outcome) -> bool) -> Bracket {
-        let trusted = self.trusted();
+        self.bracket_from(0, is_above)
+    }
+
+    /// The bracket of the transition into the outcomes with `is_above`, from the speeds
+    /// integrated on `rung` or finer.
+    fn bracket_from(&self, rung: usize, is_above: impl Fn(Outcome) -> bool) -> Bracket {
+        let mut trusted = self.trusted();
+        trusted.retain(|p| p.rung >= rung);
         let hi = trusted
             .iter()
             .filter(|p| is_above(p.outcome))
@@ -433,28 +445,41 @@ impl Search<'_> {
         Ok(())
     }
 
-    /// The rebound to start a collision at `v` on `rung` from: interpolated between the nearest
-    /// collisions of that rung below and above `v` when both rebounded and lie within
-    /// [`restart_width`] of each other; `None` (integrate from first contact) otherwise.
+    /// The rebound to start a collision at `v` on `rung` from: on the line through the
+    /// rebounds of two collisions of that rung, `a` and `b`, whose error (about
+    /// `0.36 |(v - v_a)(v - v_b)| / v^2` of the state, `docs/performance.md`, "Rebound
+    /// restarts") is smallest and at most that of interpolating at the middle of a bracket of
+    /// relative width [`restart_width`]. Between them, or beyond the nearer one by at most their
+    /// spacing (further out, the solver's own noise in the two states would be amplified).
+    /// `None` (integrate from first contact) otherwise.
     fn restart_from(&self, v: f64, rung: usize) -> Option<Rebound> {
         if !self.opts.restarts {
             return None;
         }
-        let same = || {
-            self.seen
-                .iter()
-                .filter(move |p| p.rung == rung && p.rebound.is_some())
-        };
-        let below = same()
-            .filter(|p| p.v < v)
-            .max_by(|a, b| a.v.total_cmp(&b.v))?;
-        let above = same()
-            .filter(|p| p.v > v)
-            .min_by(|a, b| a.v.total_cmp(&b.v))?;
-        if above.v - below.v > restart_width(rung) * above.v {
-            return None;
+        let width = restart_width(rung) * v;
+        let same: Vec<(f64, Rebound)> = self
+            .seen
+            .iter()
+            .filter(|p| p.rung == rung && p.v != v)
+            .filter_map(|p| Some((p.v, p.rebound?)))
+            .collect();
+        let mut best: Option<(f64, Rebound)> = None;
+        for (i, &(va, ra)) in same.iter().enumerate() {
+            for &(vb, rb) in &same[i + 1..] {
+                let product = ((v - va) * (v - vb)).abs();
+                let between = (v - va) * (v - vb) < 0.0;
+                let beyond = (v - va).abs().min((v - vb).abs()) <= (va - vb).abs();
+                if product <= 0.25 * width * width
+                    && (between || beyond)
+                    && best.as_ref().is_none_or(|(q, _)| product < *q)
+                {
+                    if let Some(r) = Rebound::through(&ra, &rb, v) {
+                        best = Some((product, r));
+                    }
+                }
+            }
         }
-        Rebound::between(&below.rebound?, &above.rebound?, v)
+        best.map(|(_, r)| r)
     }
 
     /// Stage 1: a sticking speed below both transitions and, unless nothing bounces up to
@@ -542,6 +567,12 @@ impl Search<'_> {
             if let (Some(lo), Some(hi)) = self.bracket(bouncing) {
                 // the coarsest rung the bracket allows, at most the secant rung
                 let coarse = self.rung_for((hi.v - lo.v) / hi.v).min(COARSE_SECANT_RUNG);
+                // ends from that rung or finer once they bracket V_stick: a coarser end may be
+                // misclassified within its rung's shift, and would keep the secant root out
+                let (lo, hi) = match self.bracket_from(coarse, bouncing) {
+                    (Some(l), Some(h)) => (l, h),
+                    _ => (lo, hi),
+                };
                 if hi.v - lo.v > TIGHT_PAIR_HALF_WIDTH * hi.v
                     && self.stick.coarse_steps < MAX_COARSE_SECANT_STEPS
                 {
