@@ -59,5 +59,5 @@ pub use greenwood::{CrackLaw, GreenwoodError, OutOfRange};
 pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
 pub use stick::{
     neighbours, sticking_thresholds, sweep_t_vis, Hint, SearchOptions, StickingThresholds,
-    DEFAULT_V_MAX_OVER_JKR, V_SEARCH_LIMIT,
+    DEFAULT_V_MAX_OVER_JKR, HINT_NEIGHBOURS, HINT_SPREAD_ONE, V_SEARCH_LIMIT,
 };

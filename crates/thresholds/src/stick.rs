@@ -59,12 +59,28 @@ const FIRST_LOWER_OVER_JKR: f64 = 0.99;
 /// `v_stick_once` over T_vis = 1e-16..1e-8 s: 10-17 % fewer instructions at 1e-16..1e-12 s,
 /// 1-3 % more at 1e-11..1e-8 s (`docs/performance.md`, item 17).
 const FIRST_UPPER_OVER_LOWER: f64 = 1.03;
-/// A hinted search first tries 10 % below the hinted onset and 10 % above the hinted V_stick,
-/// on the coarsest rung: wide enough to bracket both transitions when the hint, extrapolated
-/// from two neighbours, is a few per cent off, and cheap there.
-const HINT_BELOW: f64 = 0.9;
-/// See [`HINT_BELOW`].
-const HINT_ABOVE: f64 = 1.1;
+/// The [`Hint::spread`] of a hint from one neighbour, or where an extrapolation is doubtful: the
+/// first round tries 10 % below the hinted onset and 10 % above the hinted V_stick, on the
+/// coarsest rung, which brackets both transitions when the hint is a few per cent off.
+pub const HINT_SPREAD_ONE: f64 = 0.1;
+/// The spread of an extrapolated hint, per its step (the relative change from the nearer
+/// neighbour's thresholds): over Figure-4-like sweeps (CO2 60 um, k = 0.01 and 0.02, 33 T_vis
+/// from 1e-12 to 1e-8 s) the extrapolation of [`Hint::extrapolated`] was off by at most 0.34 of
+/// its step (0.01-0.03 below T_vis = 1e-9 s, where the thresholds follow the power law closely),
+/// on 11 T_vis per 4 decades by up to 0.75 of it at 1e-8 s (`docs/performance.md`, item 20).
+const HINT_SPREAD_PER_STEP: f64 = 0.75;
+/// The smallest spread of an extrapolated hint: just wide enough for the first round to run on
+/// the second rung of the tolerance ladder (a spread above [`LADDER_MARGIN`] times its shift),
+/// a third cheaper from first contact than the third. Over the sweeps of
+/// [`HINT_SPREAD_PER_STEP`], floors of 1e-4 (first rounds on the third rung), 1e-3 and 2e-3
+/// took 2-3 % more steps.
+const HINT_SPREAD_MIN: f64 = 1.02 * LADDER_MARGIN * LADDER[1].1;
+/// The spread of an extrapolated hint per miss of the same extrapolation one point earlier:
+/// the misses grew by at most a factor 1.9 from one point to the next over the sweeps of
+/// [`HINT_SPREAD_PER_STEP`] (`docs/performance.md`, item 20).
+const HINT_SPREAD_PER_MISS: f64 = 3.0;
+/// How many previous points of a sweep seed the hint of the next ([`Hint::extrapolated`]).
+pub const HINT_NEIGHBOURS: usize = 3;
 /// Growth of the upper trial per step while nothing bounces: 1.5 keeps the bracket of V_out
 /// tight enough for the secant steps on V_out while reaching 1000 V_stick,JKR in 9 rounds.
 const UPPER_GROWTH: f64 = 1.5;
@@ -101,46 +117,121 @@ pub struct SearchOptions {
     pub restarts: bool,
 }
 
-/// Expected thresholds, from a neighbouring point of a sweep (m/s).
+/// Expected thresholds, from a neighbouring point of a sweep (m/s), and how far off they may be.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Hint {
     /// Expected V_double_onset (m/s).
     pub v_double_onset: f64,
     /// Expected V_stick (m/s).
     pub v_stick: f64,
+    /// How far off the two may be, relative (dimensionless, in (0, 1)): the first round of a
+    /// search tries `(1 - spread) v_double_onset` and `(1 + spread) v_stick`, on the coarsest
+    /// rung of the tolerance ladder that resolves that bracket. [`HINT_SPREAD_ONE`] (0.1) for
+    /// the thresholds of one neighbour; [`Hint::extrapolated`] sets it from its step.
+    pub spread: f64,
 }
 
-/// The most a hint extrapolated from two neighbours moves from the nearer one (a factor): the
-/// thresholds of neighbouring points of a sweep seldom differ by more, and a wild extrapolation
-/// would cost more than no hint.
+/// The most a hint extrapolated from two neighbours moves the excess of the thresholds over
+/// their floor (a factor): the thresholds of neighbouring points of a sweep seldom differ by
+/// more, and a wild extrapolation would cost more than no hint.
 const HINT_EXTRAPOLATION_MAX: f64 = 2.0;
 
 impl Hint {
-    /// The hint for a search at `t_vis` (s) from the thresholds of the points before it in a
-    /// sweep, `previous` (the last one or two, as `(t_vis, hint)` in sweep order): the nearer
-    /// one's thresholds, moved along the trend of the two in ln T_vis (by at most a factor
-    /// [`HINT_EXTRAPOLATION_MAX`]).
-    pub fn extrapolated(t_vis: f64, previous: &[(f64, Hint)]) -> Option<Hint> {
-        match previous {
-            [] => None,
-            [.., (t0, h0), (t1, h1)] if *t0 > 0.0 && *t1 > 0.0 && t_vis > 0.0 && t0 != t1 => {
-                let s = (t_vis / t1).ln() / (t1 / t0).ln();
-                let step = |x1: f64, x0: f64| {
-                    let f = (x1 / x0).powf(s);
-                    if f.is_finite() {
-                        x1 * f.clamp(1.0 / HINT_EXTRAPOLATION_MAX, HINT_EXTRAPOLATION_MAX)
-                    } else {
-                        x1
-                    }
-                };
-                Some(Hint {
-                    v_double_onset: step(h1.v_double_onset, h0.v_double_onset),
-                    v_stick: step(h1.v_stick, h0.v_stick),
-                })
-            }
-            [.., (_, h)] => Some(*h),
+    /// The thresholds of one neighbour as a hint, with spread [`HINT_SPREAD_ONE`].
+    pub fn from_neighbour(v_double_onset: f64, v_stick: f64) -> Hint {
+        Hint {
+            v_double_onset,
+            v_stick,
+            spread: HINT_SPREAD_ONE,
         }
     }
+
+    /// The hint for a search at `t_vis` (s) from the thresholds of the points before it in a
+    /// sweep, `previous` (the last [`HINT_NEIGHBOURS`] or fewer, as `(t_vis, hint)` in sweep
+    /// order), and `floor` (m/s), the value both thresholds tend to as T_vis -> 0 (V_stick,JKR
+    /// of the contact; 0 if unknown).
+    ///
+    /// With two neighbours or more, each threshold's excess over `floor` is extrapolated from
+    /// the nearest two as a power law in T_vis (it grows about like T_vis^0.9 for CO2 60 um
+    /// below 1e-10 s; the change of the excess is capped at a factor
+    /// [`HINT_EXTRAPOLATION_MAX`]). The spread is [`HINT_SPREAD_PER_STEP`] times the larger
+    /// relative change from the nearest neighbour or, with a third neighbour, if smaller,
+    /// [`HINT_SPREAD_PER_MISS`] times how far the same extrapolation one point earlier missed the
+    /// nearest neighbour; within `[6.1e-4, 0.1]`. With one neighbour, its thresholds and spread
+    /// 0.1.
+    ///
+    /// # Example
+    /// ```
+    /// use thresholds::Hint;
+    /// // excesses over the floor of 1 m/s: 0.1 and 0.2 m/s a factor 10 in T_vis apart
+    /// let a = (1e-11, Hint::from_neighbour(1.1, 1.1));
+    /// let b = (1e-10, Hint::from_neighbour(1.2, 1.2));
+    /// let h = Hint::extrapolated(1e-9, &[a, b], 1.0).unwrap();
+    /// assert!((h.v_stick - 1.4).abs() < 1e-12); // the excess doubles again
+    /// assert!((h.spread - 0.1).abs() < 1e-12); // 0.75 x (1.4 / 1.2 - 1), capped at 0.1
+    /// // a third neighbour on the same power law: the extrapolation did not miss it, and the
+    /// // spread is its floor
+    /// let c = (1e-12, Hint::from_neighbour(1.05, 1.05));
+    /// let h = Hint::extrapolated(1e-9, &[c, a, b], 1.0).unwrap();
+    /// assert!(h.spread < 1e-3);
+    /// ```
+    pub fn extrapolated(t_vis: f64, previous: &[(f64, Hint)], floor: f64) -> Option<Hint> {
+        let valid = |t0: f64, t1: f64, t: f64| t0 > 0.0 && t1 > 0.0 && t > 0.0 && t0 != t1;
+        match previous {
+            [] => None,
+            [.., (t0, h0), (t1, h1)] if valid(*t0, *t1, t_vis) => {
+                let (onset, stick) = extrapolate((*t0, h0), (*t1, h1), t_vis, floor);
+                let off = |h: &Hint, onset: f64, stick: f64| {
+                    (onset / h.v_double_onset - 1.0)
+                        .abs()
+                        .max((stick / h.v_stick - 1.0).abs())
+                };
+                let mut spread = HINT_SPREAD_PER_STEP * off(h1, onset, stick);
+                if let [.., (tm, hm), _, _] = previous {
+                    if valid(*tm, *t0, *t1) {
+                        let (o, s) = extrapolate((*tm, hm), (*t0, h0), *t1, floor);
+                        spread = spread.min(HINT_SPREAD_PER_MISS * off(h1, o, s));
+                    }
+                }
+                let spread = spread.clamp(HINT_SPREAD_MIN, HINT_SPREAD_ONE);
+                Some(Hint {
+                    v_double_onset: onset,
+                    v_stick: stick,
+                    spread: if spread.is_finite() {
+                        spread
+                    } else {
+                        HINT_SPREAD_ONE
+                    },
+                })
+            }
+            [.., (_, h)] => Some(Hint::from_neighbour(h.v_double_onset, h.v_stick)),
+        }
+    }
+}
+
+/// The two thresholds at `t_vis` (s) from those of two neighbours: each one's excess over
+/// `floor` (m/s) as a power law in T_vis through theirs, its change capped at a factor
+/// [`HINT_EXTRAPOLATION_MAX`] (the value itself where it is not above the floor).
+fn extrapolate(
+    (t0, h0): (f64, &Hint),
+    (t1, h1): (f64, &Hint),
+    t_vis: f64,
+    floor: f64,
+) -> (f64, f64) {
+    let s = (t_vis / t1).ln() / (t1 / t0).ln();
+    let step = |x1: f64, x0: f64| {
+        let base = if x1 > floor && x0 > floor { floor } else { 0.0 };
+        let f = ((x1 - base) / (x0 - base)).powf(s);
+        if f.is_finite() {
+            base + (x1 - base) * f.clamp(1.0 / HINT_EXTRAPOLATION_MAX, HINT_EXTRAPOLATION_MAX)
+        } else {
+            x1
+        }
+    };
+    (
+        step(h1.v_double_onset, h0.v_double_onset),
+        step(h1.v_stick, h0.v_stick),
+    )
 }
 
 impl SearchOptions {
@@ -220,10 +311,7 @@ pub struct StickingThresholds {
 impl StickingThresholds {
     /// This result as the hint for a neighbouring point (`None` without both thresholds).
     pub fn as_hint(&self) -> Option<Hint> {
-        Some(Hint {
-            v_double_onset: self.v_double_onset?,
-            v_stick: self.v_stick?,
-        })
+        Some(Hint::from_neighbour(self.v_double_onset?, self.v_stick?))
     }
 
     /// The speed (m/s) up to which no collision bounced when there is no V_stick, else `None`.
@@ -261,6 +349,18 @@ const SECANT_PROBE: f64 = 1e-3;
 /// Half-width (relative) of the first full-tolerance pair around a coarse estimate: twice the
 /// largest shift of the coarse rung measured (7e-5), so that the pair straddles V_stick.
 const TIGHT_PAIR_HALF_WIDTH: f64 = 1.5e-4;
+
+/// Half-width of a closing pair of V_stick, relative to the search's `rel_tol`: a pair around a
+/// root estimate that straddles V_stick is then a final bracket (narrower than `rel_tol`), and
+/// it tolerates an estimate 0.45 `rel_tol` off (the secant through two full-tolerance collisions
+/// 3e-4 apart was off by 4.6e-7 at T_vis = 1e-11 s, CO2 60 um).
+const CLOSING_HALF_WIDTH: f64 = 0.45;
+/// Newton steps on the parabola of [`Search::quadratic_root`], from the secant root: near the
+/// root the parabola is close to its secant, and each step squares the relative error.
+const QUADRATIC_NEWTON_STEPS: usize = 4;
+/// [`Search::quadratic_root`] accepts a root where the parabola is below this fraction of
+/// its slope times V_in (a relative error in V_in well below any bracket).
+const QUADRATIC_SETTLED: f64 = 1e-12;
 
 /// The rebound of a collision at the search tolerance is restarted from the line through two
 /// full-tolerance collisions whose rebounds are at most as far off as interpolating at the middle
@@ -491,13 +591,42 @@ impl Search<'_> {
         let hinted = self.opts.hint.filter(|h| {
             h.v_double_onset > 0.0
                 && h.v_stick >= h.v_double_onset
-                && h.v_stick * HINT_ABOVE <= v_max
+                && h.spread > 0.0
+                && h.spread < 1.0
+                && h.v_stick * (1.0 + h.spread.max(HINT_SPREAD_ONE)) <= v_max
         });
         match hinted {
-            Some(h) => self.round(&[
-                (HINT_BELOW * h.v_double_onset, coarse),
-                (HINT_ABOVE * h.v_stick, coarse),
-            ])?,
+            Some(h) => {
+                let (lo, hi) = (
+                    (1.0 - h.spread) * h.v_double_onset,
+                    (1.0 + h.spread) * h.v_stick,
+                );
+                // the coarsest rung that classifies speeds a spread away from a transition
+                let rung = self.rung_for(h.spread);
+                self.round(&[(lo, rung), (hi, rung)])?;
+                // a narrow hint that missed a side: that side again, at the geometric mean of
+                // the spread and 10 %, and 10 % out
+                if h.spread < HINT_SPREAD_ONE {
+                    let wide = HINT_SPREAD_ONE;
+                    let mean = (h.spread * wide).sqrt();
+                    let (far, up) = (1.0 - mean, 1.0 + mean);
+                    match (self.has(sticks), self.has(bouncing)) {
+                        (true, true) => {}
+                        (false, true) => self.round(&[
+                            (far * h.v_double_onset, coarse),
+                            ((1.0 - wide) * h.v_double_onset, coarse),
+                        ])?,
+                        (true, false) => self.round(&[
+                            (up * h.v_stick, coarse),
+                            ((1.0 + wide) * h.v_stick, coarse),
+                        ])?,
+                        (false, false) => self.round(&[
+                            ((1.0 - wide) * h.v_double_onset, coarse),
+                            ((1.0 + wide) * h.v_stick, coarse),
+                        ])?,
+                    }
+                }
+            }
             None => self.round(&[
                 (v, coarse),
                 ((FIRST_UPPER_OVER_LOWER * v).min(v_max), coarse),
@@ -606,7 +735,15 @@ impl Search<'_> {
                         return Ok(vec![(p, coarse), (p * (1.0 + SECANT_PROBE), coarse)]);
                     }
                 } else {
-                    self.stick.estimate = self.stick.estimate.or(Some(0.5 * (lo.v + hi.v)));
+                    // the bracket is narrow: the secant root inside it, else the last estimate
+                    // if still inside (an earlier one may have been passed), else its midpoint
+                    let inside = |q: &f64| *q > lo.v && *q < hi.v;
+                    let estimate = self
+                        .v_out_root(coarse)
+                        .filter(inside)
+                        .or(self.stick.estimate.filter(inside))
+                        .unwrap_or(0.5 * (lo.v + hi.v));
+                    self.stick.estimate = Some(estimate);
                 }
             }
             self.stick.settled = true;
@@ -618,6 +755,17 @@ impl Search<'_> {
             (Some(lo), Some(hi)) => {
                 if hi.v - lo.v <= self.opts.rel_tol * hi.v {
                     return Ok(Vec::new());
+                }
+                // V_out crosses zero smoothly from a double collision: the root of the parabola
+                // through the three speeds nearest to it, and a closing pair around it
+                let closing = CLOSING_HALF_WIDTH * self.opts.rel_tol;
+                if let Some(q) = self
+                    .quadratic_root(tight)
+                    .filter(|q| lo.outcome == Outcome::DoubleCollision && *q > lo.v && *q < hi.v)
+                {
+                    let below = (q * (1.0 - closing)).max(0.5 * (lo.v + q));
+                    let above = (q * (1.0 + closing)).min(0.5 * (q + hi.v));
+                    return Ok(vec![(below, tight), (above, tight)]);
                 }
                 if let Some((a, b)) = self.bouncing_roots(tight) {
                     // just outside the two estimates, inside the bracket
@@ -636,7 +784,7 @@ impl Search<'_> {
                 let root = self.v_out_root(tight).filter(|q| *q > lo.v && *q < hi.v);
                 match root {
                     Some(q) => {
-                        self.stick.half_width = eps.min(0.25 * (hi.v - lo.v) / hi.v);
+                        self.stick.half_width = closing.min(0.25 * (hi.v - lo.v) / hi.v);
                         q
                     }
                     // no secant (V_out is steep near V_stick in the JKR limit, and a sticking
@@ -691,6 +839,35 @@ impl Search<'_> {
         (lo.is_finite() && hi.is_finite() && lo > 0.0 && hi < self.v_max).then_some((lo, hi))
     }
 
+    /// The root of V_out(V_in) of the parabola through the three double or bouncing collisions
+    /// on `rung` or finer with the smallest |V_out|, by Newton steps from the secant root of the
+    /// nearest two; `None` without three such speeds or when the steps do not settle.
+    fn quadratic_root(&self, rung: usize) -> Option<f64> {
+        let mut pts: Vec<Seen> = self
+            .seen
+            .iter()
+            .filter(|p| not_sticking(p.outcome) && p.rung >= rung)
+            .copied()
+            .collect();
+        pts.sort_by(|a, b| a.v_out.abs().total_cmp(&b.v_out.abs()));
+        let [a, b, c, ..] = pts.as_slice() else {
+            return None;
+        };
+        // Newton's divided differences: p(v) = y_a + f_ab (v - v_a) + f_abc (v - v_a)(v - v_b)
+        let f_ab = (b.v_out - a.v_out) / (b.v - a.v);
+        let f_bc = (c.v_out - b.v_out) / (c.v - b.v);
+        let f_abc = (f_bc - f_ab) / (c.v - a.v);
+        let mut v = a.v - a.v_out / f_ab;
+        for _ in 0..QUADRATIC_NEWTON_STEPS {
+            let p = a.v_out + f_ab * (v - a.v) + f_abc * (v - a.v) * (v - b.v);
+            let dp = f_ab + f_abc * (2.0 * v - a.v - b.v);
+            v -= p / dp;
+        }
+        let p = a.v_out + f_ab * (v - a.v) + f_abc * (v - a.v) * (v - b.v);
+        let settled = (p / (f_ab * v)).abs() < QUADRATIC_SETTLED;
+        (v.is_finite() && v > 0.0 && settled).then_some(v)
+    }
+
     /// The bracket of a transition from full-tolerance collisions only.
     fn tight_bracket(&self, is_above: impl Fn(Outcome) -> bool) -> Bracket {
         let tight = self.tight();
@@ -735,9 +912,11 @@ impl Search<'_> {
     /// The next speeds (one or two) for the onset of double collisions; none when it is done.
     ///
     /// The onset is a jump in the outcome: it is trisected on the coarsest rung the bracket's
-    /// width allows. An end found on a coarser rung than the width now needs is integrated again
-    /// on the current rung first (a coarse speed within its rung's shift of the onset may be
-    /// misclassified), and the final ends at full tolerance.
+    /// width allows. A coarse speed within its rung's shift of the onset may be misclassified:
+    /// when both ends come from coarser rungs than the width now needs (the bracket has just
+    /// narrowed past a rung), the new rung trisects it, which usually yields two new ends; an end
+    /// still coarser after that is integrated again on the current rung, alongside the bracket's
+    /// midpoint, and the final ends at full tolerance.
     fn onset_jobs(&self) -> Vec<(f64, usize)> {
         let (Some(lo), Some(hi)) = self.bracket(not_sticking) else {
             return Vec::new();
@@ -755,9 +934,8 @@ impl Search<'_> {
             .collect();
         if width > self.opts.rel_tol {
             match jobs.len() {
-                0 => jobs = trisect(lo.v, hi.v, rung),
                 1 => jobs.push((0.5 * (lo.v + hi.v), rung)),
-                _ => {}
+                _ => jobs = trisect(lo.v, hi.v, rung),
             }
         }
         jobs
@@ -876,12 +1054,12 @@ pub fn sticking_thresholds(
     Ok(search.result())
 }
 
-/// The last one or two results of a sweep with both thresholds, as `(t_vis, hint)` for
-/// [`Hint::extrapolated`] (none when the last has no hint).
+/// The last [`HINT_NEIGHBOURS`] (or fewer) results of a sweep with both thresholds, as
+/// `(t_vis, hint)` for [`Hint::extrapolated`] (none when the last has no hint).
 pub fn neighbours(done: &[StickingThresholds]) -> Vec<(f64, Hint)> {
     done.iter()
         .rev()
-        .take(2)
+        .take(HINT_NEIGHBOURS)
         .map_while(|th| Some((th.t_vis, th.as_hint()?)))
         .collect::<Vec<_>>()
         .into_iter()
@@ -900,7 +1078,7 @@ pub fn sweep_t_vis(
 ) -> Result<Vec<StickingThresholds>, ThresholdsError> {
     let mut out: Vec<StickingThresholds> = Vec::with_capacity(t_vis.len());
     for &t in t_vis {
-        let hint = Hint::extrapolated(t, &neighbours(&out));
+        let hint = Hint::extrapolated(t, &neighbours(&out), contact.v_stick_jkr());
         let o = SearchOptions {
             hint: hint.or(opts.hint),
             ..*opts

@@ -12,7 +12,7 @@
 //! gives ([`Chunk::compute_from`]): a resumed sweep equals an uninterrupted one.
 
 use crate::laws::{v_frag, TVisLaw};
-use crate::stick::{sticking_thresholds, Hint, SearchOptions, StickingThresholds};
+use crate::stick::{sticking_thresholds, Hint, SearchOptions, StickingThresholds, HINT_NEIGHBOURS};
 use crate::ThresholdsError;
 use contact::{Contact, Geometry, Material};
 use greenwood::{CrackLaw, OutOfRange};
@@ -102,10 +102,7 @@ pub struct Row {
 impl Row {
     /// This row's thresholds as a hint for the next T_vis of its chunk.
     pub fn hint(&self) -> Option<Hint> {
-        Some(Hint {
-            v_double_onset: self.v_double_onset?,
-            v_stick: self.v_stick?,
-        })
+        Some(Hint::from_neighbour(self.v_double_onset?, self.v_stick?))
     }
 }
 
@@ -282,7 +279,8 @@ impl Chunk {
     }
 
     /// Computes the points from `start` on, calling `done` with each row as it is found.
-    /// `previous` holds the thresholds of the points just before `start` (the last one or two,
+    /// `previous` holds the thresholds of the points just before `start` (the last
+    /// [`HINT_NEIGHBOURS`] or fewer,
     /// as `(t_vis, hint)` from [`Row::hint`]; empty for a fresh chunk), which seed the first
     /// search as they would have in an uninterrupted run. `laws(k)` gives the crack law of a k
     /// (build each once and share it).
@@ -299,7 +297,7 @@ impl Chunk {
         for p in self.points.iter().skip(start) {
             let contact = Contact::new(p.constants, p.geometry)?;
             let law = laws(p.k)?;
-            let hint = Hint::extrapolated(p.t_vis, &previous);
+            let hint = Hint::extrapolated(p.t_vis, &previous, contact.v_stick_jkr());
             let o = SearchOptions { hint, ..*opts };
             let th: StickingThresholds = sticking_thresholds(&contact, &law, p.t_vis, &o)?;
             let row = Row {
@@ -314,7 +312,7 @@ impl Chunk {
             match row.hint() {
                 Some(h) => {
                     previous.push((p.t_vis, h));
-                    if previous.len() > 2 {
+                    if previous.len() > HINT_NEIGHBOURS {
                         previous.remove(0);
                     }
                 }

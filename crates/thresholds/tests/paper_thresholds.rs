@@ -328,10 +328,7 @@ fn hinted_sweep_agrees_with_independent_searches() {
     }
     assert!(n_swept < n_alone, "{n_swept} >= {n_alone}");
     let wrong = SearchOptions {
-        hint: Some(Hint {
-            v_double_onset: 1.0,
-            v_stick: 2.0,
-        }),
+        hint: Some(Hint::from_neighbour(1.0, 2.0)),
         ..Default::default()
     };
     let th = sticking_thresholds(&c, &law, 1e-9, &wrong).unwrap();

@@ -23,7 +23,7 @@ use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 use thresholds::sweep::{Chunk, Grid, NamedMaterial, Partner, Row, TVisAxis, COLUMNS, UNITS};
-use thresholds::{CrackLaw, Hint, SearchOptions, TVisLaw, ThresholdsError};
+use thresholds::{CrackLaw, Hint, SearchOptions, TVisLaw, ThresholdsError, HINT_NEIGHBOURS};
 
 /// Seconds between two progress lines when stderr is not a terminal.
 const PLAIN_PROGRESS_EVERY: Duration = Duration::from_secs(5);
@@ -379,10 +379,7 @@ fn hint_of(format: Format, line: &str) -> Option<Hint> {
             (v["v_double_onset"].as_f64()?, v["v_stick"].as_f64()?)
         }
     };
-    Some(Hint {
-        v_double_onset: onset,
-        v_stick: stick,
-    })
+    Some(Hint::from_neighbour(onset, stick))
 }
 
 /// The complete rows of an existing file of the same sweep: checks the header, drops a torn
@@ -536,7 +533,7 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
                 let mut previous: Vec<(f64, Hint)> = c.points[..start]
                     .iter()
                     .rev()
-                    .take(2)
+                    .take(HINT_NEIGHBOURS)
                     .map_while(|p| {
                         let hint = written.get(p.index).and_then(|l| hint_of(args.format, l))?;
                         Some((p.t_vis, hint))
