@@ -5,31 +5,18 @@
 //! cargo run --release -p thresholds --example tight_reference
 //! ```
 //! For each case, V_stick and V_double_onset with `SearchOptions::default()` (relative
-//! tolerance 1e-6) and with a reference search (BDF at rtol 1e-11, bracket 1e-9); prints the
+//! tolerance 1e-6) and with a reference search (`SearchOptions::reference()`: BDF at rtol 1e-11, bracket 1e-9); prints the
 //! relative differences and the number of collisions of the default search, then the same
 //! search without rebound restarts (`SearchOptions::restarts`).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use thresholds::{
-    sticking_thresholds, Contact, CrackLaw, Geometry, Material, Method, SearchOptions,
-    SolverOptions,
-};
+use thresholds::{sticking_thresholds, Contact, CrackLaw, Geometry, Material, SearchOptions};
 
 fn main() {
     let law = CrackLaw::new(0.01).unwrap();
     let co2 = Contact::new(Material::co2(), Geometry::identical(60e-6)).unwrap();
     let h2o = Contact::new(Material::h2o(), Geometry::identical(90e-6)).unwrap();
-    let reference = SearchOptions {
-        rel_tol: 1e-9,
-        solver: SolverOptions {
-            method: Method::Bdf,
-            rtol: 1e-11,
-            atol: 1e-14,
-            ..SolverOptions::default()
-        },
-        restarts: false,
-        ..SearchOptions::default()
-    };
+    let reference = SearchOptions::reference();
     println!(
         "case | V_stick - ref | V_double_onset - ref | collisions | without restarts: V_stick - ref | V_double_onset - ref"
     );

@@ -6,8 +6,9 @@
 //! cargo run --release -p thresholds --example tolerance_ladder
 //! ```
 //! For CO2 (60 um) and H2O (90 um) at several T_vis, each threshold is searched to a relative
-//! width of 1e-9 with the solver at each rtol (atol = 1e-3 rtol), and compared with a reference
-//! at BDF rtol 1e-11. Prints the relative shifts and the largest per integrator and rtol.
+//! width of 1e-9 with the solver at each rtol (atol = 1e-3 rtol), and compared with
+//! `SearchOptions::reference()` (BDF at rtol 1e-11, no rebound restarts). Prints the relative
+//! shifts and the largest per integrator and rtol.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use dynamics::Method;
@@ -47,7 +48,12 @@ fn main() {
     };
     let mut worst = vec![[0.0f64; 2]; methods.len() * rtols.len()];
     for (name, contact, t_vis) in cases {
-        let (s_ref, o_ref) = search(&contact, t_vis, Method::Bdf, 1e-11);
+        let reference =
+            sticking_thresholds(&contact, &law, t_vis, &SearchOptions::reference()).unwrap();
+        let (s_ref, o_ref) = (
+            reference.v_stick.unwrap(),
+            reference.v_double_onset.unwrap(),
+        );
         for (m, method) in methods.iter().enumerate() {
             let mut line = format!("{name} T_vis = {t_vis:e} s, {method:?}:");
             for (r, rtol) in rtols.iter().enumerate() {

@@ -37,7 +37,7 @@
 
 use crate::ThresholdsError;
 use contact::Contact;
-use dynamics::{Collider, Outcome, Rebound, SolverOptions};
+use dynamics::{Collider, Method, Outcome, Rebound, SolverOptions};
 use greenwood::{format::number, CrackLaw, OutOfRange};
 
 /// Highest impact speed any search integrates (m/s): 10 km/s is far above the collision speeds
@@ -244,6 +244,31 @@ impl SearchOptions {
             rtol: 1e-8,
             atol: 1e-11,
             ..SolverOptions::default()
+        }
+    }
+
+    /// A reference search, against which the defaults are measured (`docs/performance.md`,
+    /// "Accuracy" and "Tolerance ladder"): brackets of relative width 1e-9, BDF at rtol 1e-11
+    /// (absolute 1e-14), every collision from first contact (no rebound restarts). About 20
+    /// times the cost of the default.
+    ///
+    /// # Example
+    /// ```
+    /// use thresholds::{Method, SearchOptions};
+    /// let r = SearchOptions::reference();
+    /// assert_eq!((r.rel_tol, r.solver.rtol, r.solver.method, r.restarts), (1e-9, 1e-11, Method::Bdf, false));
+    /// ```
+    pub fn reference() -> SearchOptions {
+        SearchOptions {
+            rel_tol: 1e-9,
+            solver: SolverOptions {
+                method: Method::Bdf,
+                rtol: 1e-11,
+                atol: 1e-14,
+                ..SolverOptions::default()
+            },
+            restarts: false,
+            ..SearchOptions::default()
         }
     }
 
