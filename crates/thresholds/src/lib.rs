@@ -58,6 +58,6 @@ pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_
 pub use greenwood::{CrackLaw, GreenwoodError, OutOfRange};
 pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
 pub use stick::{
-    neighbours, sticking_thresholds, sweep_t_vis, Hint, SearchOptions, StickingThresholds,
-    DEFAULT_V_MAX_OVER_JKR, HINT_NEIGHBOURS, HINT_SPREAD_ONE, V_SEARCH_LIMIT,
+    neighbours, sticking_thresholds, sweep_t_vis, Hint, HintChain, SearchOptions,
+    StickingThresholds, DEFAULT_V_MAX_OVER_JKR, HINT_NEIGHBOURS, HINT_SPREAD_ONE, V_SEARCH_LIMIT,
 };

@@ -1082,14 +1082,60 @@ pub fn sticking_thresholds(
 /// The last [`HINT_NEIGHBOURS`] (or fewer) results of a sweep with both thresholds, as
 /// `(t_vis, hint)` for [`Hint::extrapolated`] (none when the last has no hint).
 pub fn neighbours(done: &[StickingThresholds]) -> Vec<(f64, Hint)> {
-    done.iter()
-        .rev()
-        .take(HINT_NEIGHBOURS)
-        .map_while(|th| Some((th.t_vis, th.as_hint()?)))
-        .collect::<Vec<_>>()
-        .into_iter()
-        .rev()
-        .collect()
+    let mut chain = HintChain::default();
+    for th in done {
+        chain.push(th.t_vis, th.as_hint());
+    }
+    chain.previous
+}
+
+/// The hints along a sweep: the thresholds of its last [`HINT_NEIGHBOURS`] points (fewer at
+/// its start or after a point without both thresholds), extrapolated to the next T_vis.
+///
+/// # Example
+/// ```
+/// use thresholds::{Hint, HintChain};
+/// let mut chain = HintChain::default();
+/// assert_eq!(chain.next(1e-10, 0.0), None); // nothing to go by yet
+/// chain.push(1e-11, Some(Hint::from_neighbour(0.02, 0.021)));
+/// assert_eq!(chain.next(1e-10, 0.0).unwrap().v_stick, 0.021); // one neighbour: its thresholds
+/// chain.push(1e-10, None); // no thresholds there: start again
+/// assert_eq!(chain.next(1e-9, 0.0), None);
+/// ```
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct HintChain {
+    previous: Vec<(f64, Hint)>,
+}
+
+impl HintChain {
+    /// A chain continuing from `previous` (`(t_vis, hint)` in sweep order, the last
+    /// [`HINT_NEIGHBOURS`] are kept), for instance the rows of an interrupted sweep.
+    pub fn new(previous: &[(f64, Hint)]) -> Self {
+        let skip = previous.len().saturating_sub(HINT_NEIGHBOURS);
+        Self {
+            previous: previous[skip..].to_vec(),
+        }
+    }
+
+    /// The hint for the next point, at `t_vis` (s), with thresholds tending to `floor` (m/s) as
+    /// T_vis -> 0 ([`Hint::extrapolated`]); `None` without a previous point.
+    pub fn next(&self, t_vis: f64, floor: f64) -> Option<Hint> {
+        Hint::extrapolated(t_vis, &self.previous, floor)
+    }
+
+    /// Records the point at `t_vis` (s) with its thresholds as a hint (`None` without both,
+    /// which empties the chain: the next point starts afresh).
+    pub fn push(&mut self, t_vis: f64, hint: Option<Hint>) {
+        match hint {
+            Some(h) => {
+                self.previous.push((t_vis, h));
+                if self.previous.len() > HINT_NEIGHBOURS {
+                    self.previous.remove(0);
+                }
+            }
+            None => self.previous.clear(),
+        }
+    }
 }
 
 /// `sticking_thresholds` over a sequence of relaxation times (s), each search started from the
@@ -1102,13 +1148,15 @@ pub fn sweep_t_vis(
     opts: &SearchOptions,
 ) -> Result<Vec<StickingThresholds>, ThresholdsError> {
     let mut out: Vec<StickingThresholds> = Vec::with_capacity(t_vis.len());
+    let mut chain = HintChain::default();
     for &t in t_vis {
-        let hint = Hint::extrapolated(t, &neighbours(&out), contact.v_stick_jkr());
         let o = SearchOptions {
-            hint: hint.or(opts.hint),
+            hint: chain.next(t, contact.v_stick_jkr()).or(opts.hint),
             ..*opts
         };
-        out.push(sticking_thresholds(contact, law, t, &o)?);
+        let th = sticking_thresholds(contact, law, t, &o)?;
+        chain.push(t, th.as_hint());
+        out.push(th);
     }
     Ok(out)
 }

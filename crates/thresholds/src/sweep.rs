@@ -12,7 +12,7 @@
 //! gives ([`Chunk::compute_from`]): a resumed sweep equals an uninterrupted one.
 
 use crate::laws::{v_frag, TVisLaw};
-use crate::stick::{sticking_thresholds, Hint, SearchOptions, StickingThresholds, HINT_NEIGHBOURS};
+use crate::stick::{sticking_thresholds, Hint, HintChain, SearchOptions, StickingThresholds};
 use crate::ThresholdsError;
 use contact::{Contact, Geometry, Material};
 use greenwood::{CrackLaw, OutOfRange};
@@ -292,12 +292,12 @@ impl Chunk {
         opts: &SearchOptions,
         done: &mut impl FnMut(&Row),
     ) -> Result<Vec<Row>, ThresholdsError> {
-        let mut previous: Vec<(f64, Hint)> = previous.to_vec();
+        let mut chain = HintChain::new(previous);
         let mut rows = Vec::with_capacity(self.points.len().saturating_sub(start));
         for p in self.points.iter().skip(start) {
             let contact = Contact::new(p.constants, p.geometry)?;
             let law = laws(p.k)?;
-            let hint = Hint::extrapolated(p.t_vis, &previous, contact.v_stick_jkr());
+            let hint = chain.next(p.t_vis, contact.v_stick_jkr());
             let o = SearchOptions { hint, ..*opts };
             let th: StickingThresholds = sticking_thresholds(&contact, &law, p.t_vis, &o)?;
             let row = Row {
@@ -309,15 +309,7 @@ impl Chunk {
                 no_bouncing_below: th.no_bouncing_below(),
                 warnings: contact.warnings().iter().map(|w| w.to_string()).collect(),
             };
-            match row.hint() {
-                Some(h) => {
-                    previous.push((p.t_vis, h));
-                    if previous.len() > HINT_NEIGHBOURS {
-                        previous.remove(0);
-                    }
-                }
-                None => previous.clear(),
-            }
+            chain.push(p.t_vis, row.hint());
             done(&row);
             rows.push(row);
         }
