@@ -8,9 +8,8 @@ use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use std::collections::BTreeMap;
-use thresholds::sweep::{Grid, NamedMaterial, Partner, Row, TVisAxis};
-use thresholds::{CrackLaw, OutOfRange, SearchOptions, TVisLaw, ThresholdsError};
+use thresholds::sweep::{Grid, Laws, NamedMaterial, Partner, Row, TVisAxis};
+use thresholds::{OutOfRange, SearchOptions, TVisLaw};
 
 /// Rows of the chunks `chunks` (all when None) of the grid, as columns: `index` (grid order),
 /// the inputs and the results of `thresholds::sweep::COLUMNS` (NaN where none; `radius2` NaN
@@ -85,17 +84,8 @@ pub fn sweep<'py>(
             all.len()
         )));
     }
-    let laws: BTreeMap<u64, CrackLaw> = grid
-        .k
-        .iter()
-        .map(|&k| CrackLaw::new(k).map(|l| (k.to_bits(), l)))
-        .collect::<Result<_, _>>()
-        .map_err(|e| Error::from_thresholds(e.into(), 0))?;
-    let law = |k: f64| -> Result<CrackLaw, ThresholdsError> {
-        laws.get(&k.to_bits())
-            .cloned()
-            .ok_or_else(|| OutOfRange::new("k", k, "0 < k < 1", "dimensionless").into())
-    };
+    let laws = Laws::new(&grid.k).map_err(|e| Error::from_thresholds(e, 0))?;
+    let law = |k: f64| laws.get(k);
     let computed: Vec<Vec<Row>> = parallel::map(py, picked.len(), |i| {
         all[picked[i]]
             .compute(&law, &opts)

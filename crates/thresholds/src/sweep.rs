@@ -16,6 +16,7 @@ use crate::stick::{sticking_thresholds, Hint, HintChain, SearchOptions, Sticking
 use crate::ThresholdsError;
 use contact::{Contact, Geometry, Material};
 use greenwood::{CrackLaw, OutOfRange};
+use std::collections::BTreeMap;
 
 /// One material of a sweep: its name (as given: a preset or a file path) and its constants.
 #[derive(Debug, Clone, PartialEq)]
@@ -265,6 +266,41 @@ impl Grid {
             }
         }
         out
+    }
+}
+
+/// The crack-law tables of a grid's k values, each built once and shared by every point and
+/// thread (a clone shares the table).
+///
+/// # Example
+/// ```
+/// use thresholds::sweep::Laws;
+/// let laws = Laws::new(&[0.01, 0.02, 0.01])?;
+/// assert_eq!(laws.get(0.02)?.k(), 0.02);
+/// assert!(laws.get(0.05).is_err()); // not among the grid's k
+/// assert!(Laws::new(&[1.5]).is_err()); // k must lie in (0, 1)
+/// # Ok::<(), thresholds::ThresholdsError>(())
+/// ```
+#[derive(Debug, Clone)]
+pub struct Laws(BTreeMap<u64, CrackLaw>);
+
+impl Laws {
+    /// The tables of every distinct value in `k` (dimensionless, 0 < k < 1).
+    pub fn new(k: &[f64]) -> Result<Self, ThresholdsError> {
+        let mut map = BTreeMap::new();
+        for &x in k {
+            if let std::collections::btree_map::Entry::Vacant(e) = map.entry(x.to_bits()) {
+                e.insert(CrackLaw::new(x)?);
+            }
+        }
+        Ok(Self(map))
+    }
+
+    /// The table of `k`; an error for a k it was not built with.
+    pub fn get(&self, k: f64) -> Result<CrackLaw, ThresholdsError> {
+        self.0.get(&k.to_bits()).cloned().ok_or_else(|| {
+            OutOfRange::new("k", k, "one of the grid's k values", "dimensionless").into()
+        })
     }
 }
 

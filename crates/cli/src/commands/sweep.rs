@@ -22,8 +22,8 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
-use thresholds::sweep::{Chunk, Grid, NamedMaterial, Partner, Row, TVisAxis, COLUMNS, UNITS};
-use thresholds::{CrackLaw, Hint, SearchOptions, TVisLaw, ThresholdsError, HINT_NEIGHBOURS};
+use thresholds::sweep::{Chunk, Grid, Laws, NamedMaterial, Partner, Row, TVisAxis, COLUMNS, UNITS};
+use thresholds::{Hint, SearchOptions, TVisLaw, ThresholdsError, HINT_NEIGHBOURS};
 
 /// Seconds between two progress lines when stderr is not a terminal.
 const PLAIN_PROGRESS_EVERY: Duration = Duration::from_secs(5);
@@ -555,16 +555,8 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
         .num_threads(jobs)
         .build()
         .map_err(|e| CliError::Compute(format!("cannot start {jobs} threads: {e}")))?;
-    let laws: BTreeMap<u64, CrackLaw> = grid
-        .k
-        .iter()
-        .map(|&k| Ok((k.to_bits(), CrackLaw::new(k)?)))
-        .collect::<Result<_, greenwood::GreenwoodError>>()?;
-    let law = |k: f64| -> Result<CrackLaw, ThresholdsError> {
-        laws.get(&k.to_bits())
-            .cloned()
-            .ok_or_else(|| OutOfRange::new("k", k, "0 < k < 1", "dimensionless").into())
-    };
+    let laws = Laws::new(&grid.k)?;
+    let law = |k: f64| laws.get(k);
     let mut progress = Progress::new(total, done);
     let (tx, rx) = mpsc::channel::<Result<Row, ThresholdsError>>();
     let next = AtomicUsize::new(0);
