@@ -17,6 +17,14 @@ fn law() -> CrackLaw {
     CrackLaw::new(0.01).unwrap()
 }
 
+/// A collider of two CO2 spheres of 60 um at `t_vis` (s) with solver settings `opts`.
+fn co2_collider(law: &CrackLaw, t_vis: f64, opts: SolverOptions) -> Collider {
+    Collider::new(co2_60um(), law, t_vis)
+        .unwrap()
+        .with_options(opts)
+        .unwrap()
+}
+
 /// Section 4 / Figure 2: CO2, R1 = 60 um, T_vis = 1e-9 s: V_in = 3.5, 4.05, 4.5 cm/s give
 /// sticking, a double collision and bouncing.
 #[test]
@@ -171,13 +179,7 @@ fn solvers_agree_and_converge() {
                     atol: 1e-3 * rtol,
                     ..Default::default()
                 };
-                Collider::new(co2_60um(), &law, t_vis)
-                    .unwrap()
-                    .with_options(opts)
-                    .unwrap()
-                    .collide(v_in)
-                    .unwrap()
-                    .e
+                co2_collider(&law, t_vis, opts).collide(v_in).unwrap().e
             };
             let base = e(Method::Bdf, 1e-9);
             let tight = e(Method::Bdf, 1e-10);
@@ -205,12 +207,7 @@ fn auto_method_picks_the_integrator_and_agrees_with_bdf() {
             method,
             ..Default::default()
         };
-        Collider::new(co2_60um(), &law, t_vis)
-            .unwrap()
-            .with_options(opts)
-            .unwrap()
-            .collide(v_in)
-            .unwrap()
+        co2_collider(&law, t_vis, opts).collide(v_in).unwrap()
     };
     // (T_vis, V_in, integrator expected): lambda = 1.3 and 13 (explicit), 1.3e5 (stiff); and
     // 100 m/s at T_vis = 1e-9 s, about 6000 V_stick,JKR, where the contact itself is stiff
@@ -252,10 +249,7 @@ fn continuing_from_the_rebound_reproduces_the_collision() {
                 atol: 1e-3 * rtol,
                 ..Default::default()
             };
-            Collider::new(co2_60um(), &law, t_vis)
-                .unwrap()
-                .with_options(opts)
-                .unwrap()
+            co2_collider(&law, t_vis, opts)
         };
         let (col, tight) = (collider(1e-9), collider(1e-10));
         let reference = tight.collide(v_in).unwrap();
@@ -424,12 +418,7 @@ fn backends_agree() {
                 backend,
                 ..Default::default()
             };
-            Collider::new(co2_60um(), &law, 1e-9)
-                .unwrap()
-                .with_options(opts)
-                .unwrap()
-                .collide(v_in)
-                .unwrap()
+            co2_collider(&law, 1e-9, opts).collide(v_in).unwrap()
         };
         let (a, b) = (run(Backend::Nalgebra), run(Backend::Faer));
         assert_eq!(a.outcome, b.outcome);
