@@ -45,7 +45,21 @@ struct Bodies<'a> {
     wall: bool,
 }
 
-impl Bodies<'_> {
+impl<'a> Bodies<'a> {
+    /// The geometry arguments, `radius2` (if given) as long as `radius`.
+    fn new(radius: &'a Array<'_>, radius2: Option<&'a Array<'_>>, wall: bool) -> PyResult<Self> {
+        let radius = data(radius, "radius")?;
+        let radius2 = radius2.map(|r| data(r, "radius2")).transpose()?;
+        if let Some(r2) = radius2 {
+            common_len(&[("radius", radius.len()), ("radius2", r2.len())])?;
+        }
+        Ok(Self {
+            radius,
+            radius2,
+            wall,
+        })
+    }
+
     fn geometry(&self, i: usize) -> Geometry {
         let r1 = self.radius[i];
         match (self.wall, self.radius2) {
@@ -167,11 +181,7 @@ pub fn jkr<'py>(
     radius2: Option<Array<'py>>,
     wall: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies {
-        radius: data(&radius, "radius")?,
-        radius2: radius2.as_ref().map(|r| data(r, "radius2")).transpose()?,
-        wall,
-    };
+    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
     let n = bodies.radius.len();
     let rows = parallel::map(py, n, |i| {
         let c = bodies.contact(&material, i)?;
@@ -222,11 +232,7 @@ pub fn collide<'py>(
     t_end: Option<f64>,
     trajectory: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies {
-        radius: data(&radius, "radius")?,
-        radius2: radius2.as_ref().map(|r| data(r, "radius2")).transpose()?,
-        wall,
-    };
+    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
     let (t_vis, v_in, k) = (data(&t_vis, "t_vis")?, data(&v_in, "v_in")?, data(&k, "k")?);
     let n = common_len(&[
         ("radius", bodies.radius.len()),
@@ -320,11 +326,7 @@ pub fn v_stick<'py>(
     v_max: Option<f64>,
     rel_tol: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies {
-        radius: data(&radius, "radius")?,
-        radius2: radius2.as_ref().map(|r| data(r, "radius2")).transpose()?,
-        wall,
-    };
+    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
     let (t_vis, k) = (data(&t_vis, "t_vis")?, data(&k, "k")?);
     let n = common_len(&[
         ("radius", bodies.radius.len()),
@@ -378,11 +380,7 @@ pub fn fit_t_vis<'py>(
     v_max: Option<f64>,
     rel_tol: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies {
-        radius: data(&radius, "radius")?,
-        radius2: radius2.as_ref().map(|r| data(r, "radius2")).transpose()?,
-        wall,
-    };
+    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
     let (v, dv, k) = (
         data(&v_stick, "v_stick")?,
         data(&v_stick_err, "v_stick_err")?,
@@ -428,11 +426,7 @@ pub fn v_frag<'py>(
     v_max: Option<f64>,
     rel_tol: f64,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies {
-        radius: data(&radius, "radius")?,
-        radius2: radius2.as_ref().map(|r| data(r, "radius2")).transpose()?,
-        wall,
-    };
+    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
     let (t_vis, k) = (data(&t_vis, "t_vis")?, data(&k, "k")?);
     let n = common_len(&[
         ("radius", bodies.radius.len()),

@@ -157,6 +157,15 @@ def test_geometry_arguments():
         st.v_stick(CO2, t_vis=1e-9, t_vis_law="co2")
 
 
+def test_core_refuses_arrays_of_other_lengths():
+    # the package broadcasts its arguments; the compiled core, called directly, checks them
+    from stickiness import _core
+
+    one, two = np.array([60e-6]), np.array([60e-6, 30e-6])
+    with pytest.raises(ValueError, match="radius2: length 2 differs from 1"):
+        _core.jkr(CO2, one, two, False)
+
+
 def test_version():
     assert isinstance(st.__version__, str) and st.__version__.count(".") == 2
 
