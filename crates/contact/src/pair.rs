@@ -219,11 +219,14 @@ impl Contact {
     }
 
     /// Conditions under which the results of this contact should be read with care: a radius
-    /// R1 outside [`PLAUSIBLE_RADIUS`], a Tabor parameter below [`TABOR_MIN`].
+    /// R1 (`radius`) or a different R2 (`radius2`) outside [`PLAUSIBLE_RADIUS`], a Tabor
+    /// parameter below [`TABOR_MIN`].
     pub fn warnings(&self) -> Vec<Warning> {
         let tabor = self.tabor();
+        let r2 = self.geometry.r2().filter(|&r2| r2 != self.r1());
         let mut out: Vec<Warning> = Warning::for_radius("radius", self.r1())
             .into_iter()
+            .chain(r2.and_then(|r2| Warning::for_radius("radius2", r2)))
             .collect();
         if tabor < TABOR_MIN {
             out.push(Warning::JkrOutsideValidity { tabor });

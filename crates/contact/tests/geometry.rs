@@ -130,6 +130,16 @@ fn implausible_radius_warns() {
     assert!(co2(Geometry::identical(60e-6)).warnings().is_empty());
     // 5 nm: implausible, and below the Tabor validity of JKR theory (Section 2.2)
     assert_eq!(co2(Geometry::identical(5e-9)).warnings().len(), 2);
+    // the second sphere's radius is checked too, once
+    let w = co2(Geometry::spheres(60e-6, 30.0)).warnings();
+    assert!(matches!(
+        w.as_slice(),
+        [Warning::ImplausibleRadius {
+            field: "radius2",
+            ..
+        }]
+    ));
+    assert_eq!(co2(Geometry::spheres(60.0, 60.0)).warnings().len(), 1);
     assert!(Warning::for_speed("v_in", 2e3).is_some());
     assert!(Warning::for_speed("v_in", 20.0).is_none());
 }
