@@ -32,6 +32,9 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
     setup.with_input("v_stick_err", args.v_stick_err);
     setup.with_input("k", args.k.k);
     let opts = args.search.options(&mut setup);
+    // each trial T_vis is searched up to twice its target, or to --v-max if higher: null when
+    // not given
+    setup.with_input("v_max", args.search.v_max);
     let law = args.k.crack_law()?;
     let fit = thresholds::fit_t_vis(&setup.contact, &law, args.v_stick, args.v_stick_err, &opts)?;
     let mut r = Report::new(format!(
