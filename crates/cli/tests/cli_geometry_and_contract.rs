@@ -167,6 +167,28 @@ fn fit_above_the_default_limit_round_trips() {
     assert!((v / 20.0 - 1.0).abs() < 1e-3, "{v}");
 }
 
+/// An uncertainty reaching down to V_stick,JKR (1.66 cm/s for CO2 60 um): t_vis_min is the JKR
+/// limit, 0, with a warning that says why; v_max is recorded as not given (null).
+#[test]
+fn fit_range_down_to_the_jkr_limit_warns() {
+    let j = json(&[
+        "fit-t-vis",
+        "--v-stick",
+        "0.04",
+        "--v-stick-err",
+        "0.03",
+        "--json",
+    ]);
+    assert_eq!(f(&j["t_vis_min"]), 0.0);
+    assert!(j["input"]["v_max"].is_null(), "{j}");
+    let w = j["warnings"].as_array().unwrap();
+    assert!(
+        w.iter()
+            .any(|w| w.as_str().unwrap().contains("t_vis_min = 0 (the JKR limit")),
+        "{j}"
+    );
+}
+
 /// Valid but implausible input warns, on stderr and in the JSON.
 #[test]
 fn implausible_input_warns() {

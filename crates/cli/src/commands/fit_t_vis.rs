@@ -56,6 +56,14 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
             number((2.0 * top).min(thresholds::V_SEARCH_LIMIT))
         )]);
     }
+    let low = args.v_stick - args.v_stick_err;
+    if args.v_stick_err > 0.0 && low <= fit.v_stick_jkr {
+        r.warn([format!(
+            "V_stick - dV = {} m/s is at or below V_stick,JKR = {} m/s: t_vis_min = 0 (the JKR limit; no T_vis > 0 gives a V_stick that low)",
+            number(low),
+            number(fit.v_stick_jkr)
+        )]);
+    }
     r.number("t_vis", fit.t_vis, "s")?;
     r.number("t_vis_min", fit.t_vis_min, "s")?;
     r.number("t_vis_max", fit.t_vis_max, "s")?;
