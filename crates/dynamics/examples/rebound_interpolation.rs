@@ -62,7 +62,18 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     println!("{name} | {transition} | {w:.0e} | (no rebound) |");
                     continue;
                 };
+                // relative error of the line through the two rebounds at `mid`, and the
+                // coefficient C of error = C |(v - v_lo)(v - v_hi)| / v^2
+                let off = |own: &Rebound, r: &Rebound, mid: f64| {
+                    let (a, b) = (own.state(), r.state());
+                    let diff = [a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]];
+                    let error = norm(diff) / norm(a);
+                    let product = ((mid - ra.v_in()) * (mid - rb.v_in()) / (mid * mid)).abs();
+                    (error, error / product)
+                };
                 let (mut worst, mut steps) = (0.0f64, (0, 0));
+                // C interpolated (between the two) and extrapolated (beyond either end)
+                let mut coef = (0.0f64, 0.0f64);
                 for offset in [-0.3, 0.0, 0.3] {
                     let mid = v * (1.0 + offset * w);
                     let full = c.collide(mid)?;
@@ -70,37 +81,19 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     else {
                         continue;
                     };
-                    let (a, b) = (own.state(), r.state());
-                    let diff = [a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]];
-                    worst = worst.max(norm(diff) / norm(a));
+                    let (error, k) = off(&own, &r, mid);
+                    worst = worst.max(error);
+                    coef.0 = coef.0.max(k);
                     steps = (full.steps, c.collide_from(mid, &r)?.steps);
                 }
-                // extrapolated beyond either end: the coefficient C of
-                // error = C |(v - v_lo)(v - v_hi)| / v^2, for interpolation and extrapolation
-                let mut coef = (0.0f64, 0.0f64);
-                for (offset, interpolated) in [
-                    (0.0, true),
-                    (0.3, true),
-                    (0.75, false),
-                    (1.5, false),
-                    (-0.75, false),
-                    (-1.5, false),
-                ] {
+                for offset in [0.75, 1.5, -0.75, -1.5] {
                     let mid = v * (1.0 + offset * w);
                     let (Some(own), Some(r)) =
                         (c.collide(mid)?.rebound, Rebound::through(&ra, &rb, mid))
                     else {
                         continue;
                     };
-                    let (a, b) = (own.state(), r.state());
-                    let diff = [a[0] - b[0], a[1] - b[1], a[2] - b[2], a[3] - b[3]];
-                    let product = ((mid - ra.v_in()) * (mid - rb.v_in()) / (mid * mid)).abs();
-                    let k = norm(diff) / norm(a) / product;
-                    if interpolated {
-                        coef.0 = coef.0.max(k);
-                    } else {
-                        coef.1 = coef.1.max(k);
-                    }
+                    coef.1 = coef.1.max(off(&own, &r, mid).1);
                 }
                 println!(
                     "{name} | {transition} | {w:.0e} | {worst:.1e} | {:.2} / {:.2} | {} / {}",

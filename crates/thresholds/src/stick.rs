@@ -868,13 +868,7 @@ impl Search<'_> {
     /// on `rung` or finer with the smallest |V_out|, by Newton steps from the secant root of the
     /// nearest two; `None` without three such speeds or when the steps do not settle.
     fn quadratic_root(&self, rung: usize) -> Option<f64> {
-        let mut pts: Vec<Seen> = self
-            .seen
-            .iter()
-            .filter(|p| not_sticking(p.outcome) && p.rung >= rung)
-            .copied()
-            .collect();
-        pts.sort_by(|a, b| a.v_out.abs().total_cmp(&b.v_out.abs()));
+        let pts = self.by_distance_to_v_out_zero(rung);
         let [a, b, c, ..] = pts.as_slice() else {
             return None;
         };
@@ -921,6 +915,15 @@ impl Search<'_> {
     /// smallest |V_out|, nearest first; `None` without two such speeds of distinct V_in and
     /// V_out (no secant through them).
     fn nearest_to_v_out_zero(&self, rung: usize) -> Option<(Seen, Seen)> {
+        match self.by_distance_to_v_out_zero(rung).as_slice() {
+            [a, b, ..] if a.v != b.v && a.v_out != b.v_out => Some((*a, *b)),
+            _ => None,
+        }
+    }
+
+    /// The double collisions and bouncing ones integrated on `rung` or finer, by increasing
+    /// |V_out| (the points of the V_out secants and parabola).
+    fn by_distance_to_v_out_zero(&self, rung: usize) -> Vec<Seen> {
         let mut pts: Vec<Seen> = self
             .seen
             .iter()
@@ -928,10 +931,7 @@ impl Search<'_> {
             .copied()
             .collect();
         pts.sort_by(|a, b| a.v_out.abs().total_cmp(&b.v_out.abs()));
-        match pts.as_slice() {
-            [a, b, ..] if a.v != b.v && a.v_out != b.v_out => Some((*a, *b)),
-            _ => None,
-        }
+        pts
     }
 
     /// The next speeds (one or two) for the onset of double collisions; none when it is done.
