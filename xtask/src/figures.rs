@@ -6,8 +6,8 @@
 use crate::table::Table;
 use contact::{Contact, Geometry, Material};
 use dynamics::{Collider, Outcome, SolverOptions, TrajectoryPoint};
-use greenwood::format::number;
 use greenwood::CrackLaw;
+use numerics::format::number;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use thresholds::{

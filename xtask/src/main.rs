@@ -2,7 +2,7 @@
 //! `cargo xtask test`: every test, Rust and Python.
 
 use clap::{Parser, Subcommand};
-use greenwood::format::number;
+use numerics::format::number;
 use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 use std::sync::Mutex;

@@ -7,7 +7,7 @@ use crate::figures::{
     ThresholdCurve, CO2_EXPERIMENT, H2O_EXPERIMENT, V_COL_MAX, WALL_GEOMETRIES,
 };
 use dynamics::Outcome;
-use greenwood::format::number;
+use numerics::format::number;
 use plotters::coord::combinators::WithKeyPoints;
 use plotters::coord::types::RangedCoordf64;
 use plotters::coord::Shift;

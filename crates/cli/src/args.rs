@@ -259,7 +259,7 @@ impl TVisArgs {
             })?,
         };
         if !(t_vis.is_finite() && t_vis >= 0.0) {
-            return Err(greenwood::OutOfRange::new(
+            return Err(numerics::OutOfRange::new(
                 "t_vis",
                 t_vis,
                 ">= 0 and finite (0 is the JKR limit)",

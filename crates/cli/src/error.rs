@@ -2,8 +2,9 @@
 
 use contact::ContactError;
 use dynamics::DynamicsError;
-use greenwood::format::number;
-use greenwood::{GreenwoodError, OutOfRange};
+use greenwood::GreenwoodError;
+use numerics::format::number;
+use numerics::OutOfRange;
 use std::process::ExitCode;
 use thresholds::ThresholdsError;
 

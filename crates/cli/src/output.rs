@@ -1,10 +1,10 @@
 //! Printing a result: aligned `name = value unit` lines by default, one JSON object with `--json`.
 //!
-//! Every number is printed in the workspace's one format ([`greenwood::format::number`]: the
+//! Every number is printed in the workspace's one format ([`numerics::format::number`]: the
 //! shortest form that reads back to the same value, as in JSON), in text as in JSON.
 
 use crate::error::CliError;
-use greenwood::format::number;
+use numerics::format::number;
 use serde_json::{Map, Value};
 
 /// One line of a report.

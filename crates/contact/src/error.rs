@@ -1,6 +1,6 @@
 //! Typed errors of the contact model.
 
-use greenwood::OutOfRange;
+use numerics::OutOfRange;
 
 /// Everything that can go wrong when building a material or a contact.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

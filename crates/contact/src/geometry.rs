@@ -9,8 +9,8 @@
 //! `E* = E/(2(1 - nu^2))`, `gamma = 2 gamma_SV` and `T_vis` do not depend on the geometry: the
 //! same material is on both sides.
 
-use greenwood::format::length;
-use greenwood::{positive, OutOfRange};
+use numerics::format::length;
+use numerics::{positive, OutOfRange};
 use std::f64::consts::PI;
 
 /// The two bodies of a head-on contact, both of one material (SI: radii in m).

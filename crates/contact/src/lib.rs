@@ -46,8 +46,8 @@ pub mod pair;
 
 pub use error::ContactError;
 pub use geometry::Geometry;
-pub use greenwood::OutOfRange;
 pub use material::{elastic_from_sound_speeds, Material, PRESETS};
+pub use numerics::OutOfRange;
 pub use pair::{
     Contact, Warning, PLAUSIBLE_RADIUS, PLAUSIBLE_SPEED_MAX, SURFACE_FORCE_RANGE, TABOR_MIN,
 };

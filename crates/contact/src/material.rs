@@ -1,7 +1,7 @@
 //! Bulk material properties of a grain (Arakawa & Krijt 2021, Section 3).
 
 use crate::ContactError;
-use greenwood::{positive, OutOfRange};
+use numerics::{positive, OutOfRange};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 

@@ -2,8 +2,8 @@
 //! (Section 2) and the JKR sticking and breaking energies (Sections 5.1 and 6).
 
 use crate::{ContactError, Geometry, Material};
-use greenwood::format::number;
-use greenwood::positive;
+use numerics::format::number;
+use numerics::positive;
 use std::f64::consts::PI;
 
 /// Range of action of the surface forces, epsilon = 0.3 nm (Section 2.2, after Krijt et al. 2013), in m.

@@ -36,8 +36,9 @@ use contact::Contact;
 use diffsol::{
     FaerLU, FaerMat, NalgebraLU, NalgebraMat, OdeBuilder, OdeEquations, OdeSolverMethod, Vector,
 };
-use greenwood::roots::{illinois, Illinois};
-use greenwood::{CrackLaw, OutOfRange};
+use greenwood::CrackLaw;
+use numerics::roots::{illinois, Illinois};
+use numerics::OutOfRange;
 
 /// The fiducial eps = 0.01 of Section 2.6 (start at beta = (1 + eps) k, end at (1 - eps)/k).
 pub const EPS: f64 = 0.01;
@@ -147,7 +148,7 @@ impl SolverOptions {
                 "dimensionless",
             ));
         }
-        greenwood::positive("atol", self.atol, "dimensionless")?;
+        numerics::positive("atol", self.atol, "dimensionless")?;
         if !(self.decide_after.is_finite() && self.decide_after >= 0.0) {
             return Err(OutOfRange::new(
                 "decide_after",
@@ -666,7 +667,7 @@ impl Collider {
 
     /// The state where `g` crosses zero inside the last step, from `(s0, g0)` to `(s1, g1)`
     /// (values of opposite signs, or `g1 = 0`), from the solver's dense output, by the
-    /// workspace's root finder ([`greenwood::roots::illinois`]). `None` if the dense output
+    /// workspace's root finder ([`numerics::roots::illinois`]). `None` if the dense output
     /// fails.
     fn crossing<'s, Eqn, S>(
         &self,

@@ -1,8 +1,9 @@
 //! Typed errors of the collision integrator, layered over the lower crates' errors.
 
 use contact::{ContactError, Geometry};
-use greenwood::format::number;
-use greenwood::{GreenwoodError, OutOfRange};
+use greenwood::GreenwoodError;
+use numerics::format::number;
+use numerics::OutOfRange;
 
 /// Everything that can go wrong when integrating a collision.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

@@ -393,14 +393,14 @@ fn bad_inputs_are_typed_errors() {
     let err = Collider::new(co2_60um(), &law, 0.0).unwrap_err();
     assert!(matches!(
         err,
-        DynamicsError::OutOfRange(greenwood::OutOfRange { field: "t_vis", .. })
+        DynamicsError::OutOfRange(numerics::OutOfRange { field: "t_vis", .. })
     ));
     assert!(err.to_string().contains("JKR"));
     let col = Collider::new(co2_60um(), &law, 1e-9).unwrap();
     for v in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         assert!(matches!(
             col.collide(v),
-            Err(DynamicsError::OutOfRange(greenwood::OutOfRange {
+            Err(DynamicsError::OutOfRange(numerics::OutOfRange {
                 field: "v_in",
                 ..
             }))

@@ -29,7 +29,8 @@
 use crate::quad::{
     j3_complement_log_term, j3_unchecked, log_term_unchecked, sqrt_moment_unchecked,
 };
-use crate::{GreenwoodError, OutOfRange};
+use crate::GreenwoodError;
+use numerics::OutOfRange;
 
 /// Values of Appendix A's integrals at one alpha, with the complements needed by the crack law.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -17,8 +17,9 @@
 //! closing: 1 - beta = (1-k)(J3 I3 + K) / I2,         beta - k   = (1-k)(k J1 + (1-k)(1-J3)^2) / I2
 //! ```
 
-use crate::roots::{illinois, Illinois};
-use crate::{GreenwoodError, JIntegrals, OutOfRange};
+use crate::{GreenwoodError, JIntegrals};
+use numerics::roots::{illinois, Illinois};
+use numerics::OutOfRange;
 use std::f64::consts::FRAC_PI_4;
 
 /// Which branch of the crack law: the crack closes (contact grows) or opens (contact shrinks).
@@ -113,8 +114,8 @@ pub(crate) fn check_beta(k: f64, beta: f64) -> Result<(), GreenwoodError> {
             beta,
             format!(
                 "{} < beta < {} (k < beta < 1/k)",
-                crate::format::number(k),
-                crate::format::number(1.0 / k)
+                numerics::format::number(k),
+                numerics::format::number(1.0 / k)
             ),
             "dimensionless",
         )
@@ -139,7 +140,7 @@ const LN_ALPHA_BRACKET: f64 = 60.0 * std::f64::consts::LN_10;
 /// Direct inversion: the alpha at which the crack law passes through `beta` (k < beta < 1/k).
 ///
 /// Returns `None` for `beta == 1`, which corresponds to alpha = infinity (v = 0). Solves
-/// `zeta(alpha) = zeta(beta)` with [`crate::roots::illinois`] in `ln alpha` over
+/// `zeta(alpha) = zeta(beta)` with [`numerics::roots::illinois`] in `ln alpha` over
 /// `[-LN_ALPHA_BRACKET, LN_ALPHA_BRACKET]`.
 ///
 /// # Example

@@ -36,21 +36,19 @@
 //!   [`v_direct`] for a given beta.
 //! - [`table`]: [`CrackLaw`], built once per k, evaluates `v` and `dv/dbeta` in well under a
 //!   microsecond with a relative error below 1e-8 over alpha in [1e-6, 1e8].
-//! - [`roots`]: the Illinois root finder of the crack-law inversion and the T_vis fit.
-//! - [`error`]: [`OutOfRange`], the one "bad input" error, wrapped by every crate above;
-//!   [`format`]: the one number format (shortest round-trip, as in JSON).
+//! - [`error`]: [`GreenwoodError`], over `numerics`' [`OutOfRange`] (the workspace's one bad-input
+//!   error, its one number format and its one root finder live in the `numerics` crate below).
 //!
 //! Everything here is dimensionless.
 
 pub mod error;
-pub mod format;
 pub mod integrals;
 pub mod law;
 mod quad;
-pub mod roots;
 pub mod table;
 
-pub use error::{positive, GreenwoodError, OutOfRange};
+pub use error::GreenwoodError;
 pub use integrals::{j1, j2, j3, log_term, JIntegrals};
 pub use law::{alpha_of_beta, v_direct, Branch, CrackPoint};
+pub use numerics::OutOfRange;
 pub use table::{CrackLaw, CrackSpeed};

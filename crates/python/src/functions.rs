@@ -481,7 +481,7 @@ pub fn t_vis_law<'py>(
     };
     let r = data(&radius, "radius")?;
     let t = parallel::map(py, r.len(), |i| {
-        greenwood::positive("radius", r[i], "m").map_err(|bad| Error::Input { bad, index: i })?;
+        numerics::positive("radius", r[i], "m").map_err(|bad| Error::Input { bad, index: i })?;
         Ok(l.t_vis(r[i]))
     })?;
     Ok(PyArray1::from_vec(py, t))

@@ -117,7 +117,7 @@ impl Material {
     }
 
     fn __repr__(&self) -> String {
-        use greenwood::format::number;
+        use numerics::format::number;
         let m = &self.inner;
         format!(
             "Material(gamma_sv={}, young={}, poisson={}, density={})",

@@ -1,8 +1,8 @@
 //! Typed errors of the threshold searches, layered over the collision errors.
 
 use dynamics::DynamicsError;
-use greenwood::format::number;
-use greenwood::OutOfRange;
+use numerics::format::number;
+use numerics::OutOfRange;
 
 /// Everything that can go wrong in a threshold search.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

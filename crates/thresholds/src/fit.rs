@@ -2,14 +2,15 @@
 //!
 //! V_stick grows monotonically with T_vis from V_stick,JKR at T_vis -> 0, so
 //! `ln V_stick(T_vis) = ln V_measured` has one root in `ln T_vis`, bracketed by steps of a decade
-//! and found with the Illinois root finder of `greenwood::roots`. A measured value at or below
+//! and found with the Illinois root finder of `numerics::roots`. A measured value at or below
 //! V_stick,JKR is reached by no T_vis > 0 ([`ThresholdsError::BelowJkr`]).
 
 use crate::stick::{sticking_thresholds, SearchOptions, V_SEARCH_LIMIT};
 use crate::ThresholdsError;
 use contact::Contact;
-use greenwood::roots::{illinois, Illinois};
-use greenwood::{format::number, CrackLaw, OutOfRange};
+use greenwood::CrackLaw;
+use numerics::roots::{illinois, Illinois};
+use numerics::{format::number, OutOfRange};
 
 /// Relative tolerance of the fitted T_vis (dimensionless): far below the uncertainty of any
 /// measured V_stick, and 1e-5 in T_vis moves V_stick by at most ~1e-4 (d ln V/d ln T < 13).

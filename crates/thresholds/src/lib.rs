@@ -55,8 +55,9 @@ pub use dynamics::{
 };
 pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
-pub use greenwood::{CrackLaw, GreenwoodError, OutOfRange};
+pub use greenwood::{CrackLaw, GreenwoodError};
 pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
+pub use numerics::OutOfRange;
 pub use stick::{
     neighbours, sticking_thresholds, sweep_t_vis, Hint, HintChain, SearchOptions,
     StickingThresholds, DEFAULT_V_MAX_OVER_JKR, HINT_NEIGHBOURS, HINT_SPREAD_ONE, V_SEARCH_LIMIT,

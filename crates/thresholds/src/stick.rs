@@ -38,7 +38,8 @@
 use crate::ThresholdsError;
 use contact::Contact;
 use dynamics::{Collider, Method, Outcome, Rebound, SolverOptions};
-use greenwood::{format::number, CrackLaw, OutOfRange};
+use greenwood::CrackLaw;
+use numerics::{format::number, OutOfRange};
 
 /// Highest impact speed any search integrates (m/s): 10 km/s is far above the collision speeds
 /// of dust and ice grains (tens of m/s) and far beyond where contact mechanics applies.

@@ -15,7 +15,8 @@ use crate::laws::{v_frag, TVisLaw};
 use crate::stick::{sticking_thresholds, Hint, HintChain, SearchOptions, StickingThresholds};
 use crate::ThresholdsError;
 use contact::{Contact, Geometry, Material};
-use greenwood::{CrackLaw, OutOfRange};
+use greenwood::CrackLaw;
+use numerics::OutOfRange;
 use std::collections::BTreeMap;
 
 /// One material of a sweep: its name (as given: a preset or a file path) and its constants.

@@ -251,7 +251,7 @@ fn fit_at_or_below_jkr_is_refused() {
     assert!(matches!(err, ThresholdsError::BelowJkr { .. }), "{err}");
     assert!(
         err.to_string()
-            .contains(&greenwood::format::number(c.v_stick_jkr())),
+            .contains(&numerics::format::number(c.v_stick_jkr())),
         "{err}"
     );
     let fit = fit_t_vis(&c, &law(), 0.03, 0.02, &SearchOptions::default()).unwrap();

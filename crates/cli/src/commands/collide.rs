@@ -6,7 +6,7 @@ use crate::output::Report;
 use clap::Args;
 use contact::Warning;
 use dynamics::{Collider, SolverOptions, StickingCriterion};
-use greenwood::format::number;
+use numerics::format::number;
 use std::io::Write;
 use std::path::PathBuf;
 

@@ -3,7 +3,7 @@
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
-use greenwood::format::number;
+use numerics::format::number;
 
 /// Normalized crack speed v(k, beta) (Arakawa & Krijt 2021, Appendix A).
 #[derive(Debug, Args)]

@@ -4,7 +4,7 @@ use crate::args::{GeometryArgs, KArgs, MaterialArgs, SearchArgs, Setup};
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
-use greenwood::format::number;
+use numerics::format::number;
 
 /// T_vis for a measured V_stick, with the range for its uncertainty (Sections 5.1-5.2).
 #[derive(Debug, Args)]

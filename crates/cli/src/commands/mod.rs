@@ -10,7 +10,7 @@ pub mod v_frag;
 pub mod v_stick;
 
 use crate::output::Report;
-use greenwood::format::number;
+use numerics::format::number;
 
 /// Adds `v_stick` and `no_bouncing_below` (JSON only) for a search up to `v_max` (m/s).
 pub fn v_stick_rows(

@@ -5,7 +5,7 @@ use crate::args::{GeometryArgs, KArgs, MaterialArgs, SearchArgs, Setup, TVisArgs
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
-use greenwood::format::number;
+use numerics::format::number;
 
 /// V_frag = 10 V_stick for aggregates of monomers of radius R1 (Arakawa & Krijt 2021, Section 6).
 #[derive(Debug, Args)]

@@ -5,7 +5,7 @@ use crate::args::{GeometryArgs, KArgs, MaterialArgs, SearchArgs, Setup, TVisArgs
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
-use greenwood::format::number;
+use numerics::format::number;
 
 /// V_stick (double collision -> bouncing) and V_double_onset (sticking -> double collision)
 /// (Arakawa & Krijt 2021, Sections 4.4 and 5).

@@ -2,7 +2,7 @@
 //! falsi. (The threshold searches of `thresholds` classify outcomes, which jump, and keep their
 //! own secant and trisection steps on collisions.)
 //!
-//! Used for the crack-law inversion ([`crate::alpha_of_beta`], in `ln alpha`), for the
+//! Used for the crack-law inversion (`greenwood::alpha_of_beta`, in `ln alpha`), for the
 //! relaxation time that reproduces a measured V_stick (`thresholds::fit_t_vis`, in `ln T_vis`),
 //! and for the end of contact and the rebound inside a solver step (`dynamics`, in pseudo-time).
 //! Regula falsi keeps a bracket `[lo, hi]` with `f(lo)` and `f(hi)` of opposite signs and tries
@@ -56,7 +56,7 @@ impl Root {
 ///
 /// # Example
 /// ```
-/// use greenwood::roots::{illinois, Illinois};
+/// use numerics::roots::{illinois, Illinois};
 /// // the cube root of 2
 /// let f = |x: f64| Ok::<f64, ()>(x * x * x - 2.0);
 /// let r = illinois(f, (1.0, -1.0), (2.0, 6.0), &Illinois::default()).unwrap();

@@ -7,7 +7,7 @@
 /// (`0.00006`, `1e-9`, `60.0`, `1e+16`); `nan`, `inf` and `-inf` for the values JSON cannot hold.
 ///
 /// ```
-/// use greenwood::format::number;
+/// use numerics::format::number;
 /// assert_eq!(number(60e-6), "0.00006");
 /// assert_eq!(number(1e-9), "1e-9");
 /// assert_eq!(number(0.04), "0.04");
@@ -30,7 +30,7 @@ pub fn number(x: f64) -> String {
 /// the conversion itself (60e-6 / 1e-6 = 60.00000000000001) adds no digits.
 ///
 /// ```
-/// use greenwood::format::length;
+/// use numerics::format::length;
 /// assert_eq!(length(60e-6), "60 um");
 /// assert_eq!(length(1.5e-6), "1.5 um");
 /// assert_eq!(length(1e-7), "100 nm");
