@@ -29,17 +29,35 @@
 //! integrated with diffsol (by default its explicit Tsit45 where the collision is not stiff and
 //! its BDF method, with the analytic Jacobian, where it is: [`Method::Auto`]) in the
 //! nondimensional variables and pseudo-time described in [`model`]. Sticking is decided by the
-//! energy bound and oscillation criteria described in [`collision`].
+//! energy bound and oscillation criteria described in [`sticking`].
+//!
+//! ## Map
+//! - [`collider`]: [`Collider`], the public entry point: [`Collider::collide`] from first
+//!   contact, [`Collider::collide_from`] from a [`Rebound`].
+//! - [`outcome`]: what a collision gives: [`Outcome`], [`Collision`], [`TrajectoryPoint`].
+//! - [`options`]: [`SolverOptions`], [`Method`] (and how [`Method::Auto`] chooses), [`Backend`].
+//! - [`sticking`]: how a contact is proved never to end.
+//! - [`rebound`]: the state where delta first returns to zero, to continue a collision from.
+//! - `integrate` (private): diffsol's integrators, the step loop, the end of contact and the rebound
+//!   placed inside a step.
+//! - [`model`] and [`scales`]: the ODE in JKR units and the conversion to SI.
 
-pub mod collision;
+pub mod collider;
 pub mod error;
+mod integrate;
 pub mod model;
+pub mod options;
+pub mod outcome;
+pub mod rebound;
 pub mod scales;
+pub mod sticking;
 
-pub use collision::{
-    auto_explicit_step_budget, Backend, Collider, Collision, Method, Outcome, Rebound,
-    SolverOptions, StickingCriterion, TrajectoryPoint, AUTO_EXPLICIT_LAMBDA_MAX,
-    AUTO_EXPLICIT_RTOL_FACTOR, AUTO_EXPLICIT_STEPS_AT_RTOL_1E8, EPS, H0,
-};
+pub use collider::{Collider, EPS};
 pub use error::DynamicsError;
+pub use options::{
+    auto_explicit_step_budget, Backend, Method, SolverOptions, AUTO_EXPLICIT_LAMBDA_MAX,
+    AUTO_EXPLICIT_RTOL_FACTOR, AUTO_EXPLICIT_STEPS_AT_RTOL_1E8, H0,
+};
+pub use outcome::{Collision, Outcome, StickingCriterion, TrajectoryPoint};
+pub use rebound::Rebound;
 pub use scales::Scales;

@@ -1,0 +1,263 @@
+//! [`Collider`]: one head-on collision, from first contact to separation or to a proof of
+//! sticking (Sections 2.6 and 4).
+//!
+//! Section 2.6 of Arakawa & Krijt (2021): start at `delta = 0`, `delta_dot = V_in`,
+//! `beta = (1 + eps) k`; end when `beta = (1 - eps)/k`, where the spheres separate with
+//! `V_out = delta_dot`. Outcomes (Section 4): bouncing (`V_out < 0`, `e = -V_out/V_in > 0`),
+//! double collision (`V_out > 0`, `e < 0`), sticking (the contact never ends, `e = 0`; how it
+//! is proved: [`crate::sticking`]). The integration itself is in the private module `integrate`.
+
+use crate::integrate::Start;
+use crate::model::{self, Params, NSTATES};
+use crate::scales::Scales;
+use crate::{Collision, DynamicsError, Rebound, SolverOptions, TrajectoryPoint, H0};
+use contact::Contact;
+use greenwood::CrackLaw;
+use numerics::OutOfRange;
+
+/// The fiducial eps = 0.01 of Section 2.6 (start at beta = (1 + eps) k, end at (1 - eps)/k).
+pub const EPS: f64 = 0.01;
+
+/// Integrates collisions of one contact at one relaxation time.
+///
+/// It owns its crack law: build the [`CrackLaw`] once per k and pass it (or a reference: the
+/// table is shared, never copied) to every collider.
+#[derive(Debug, Clone)]
+pub struct Collider {
+    pub(crate) contact: Contact,
+    pub(crate) law: CrackLaw,
+    pub(crate) t_vis: f64,
+    pub(crate) eps: f64,
+    pub(crate) scales: Scales,
+    pub(crate) params: Params,
+    pub(crate) beta_end: f64,
+    pub(crate) energy_bound: f64,
+    pub(crate) options: SolverOptions,
+}
+
+impl Collider {
+    /// Collisions of `contact` with the crack law `law` (a [`CrackLaw`] or a reference to one;
+    /// its k) and relaxation time `t_vis` (s, finite, > 0; the limit T_vis -> 0 is JKR theory,
+    /// see `contact::Contact::v_stick_jkr`).
+    pub fn new(
+        contact: Contact,
+        law: impl Into<CrackLaw>,
+        t_vis: f64,
+    ) -> Result<Self, DynamicsError> {
+        if !(t_vis.is_finite() && t_vis > 0.0) {
+            return Err(OutOfRange::new(
+                "t_vis",
+                t_vis,
+                "> 0 and finite (T_vis -> 0 is the JKR limit: use V_stick,JKR)",
+                "s",
+            )
+            .into());
+        }
+        let law = law.into();
+        let scales = Scales::new(&contact);
+        let params = scales.params(&contact, t_vis);
+        let mut c = Self {
+            contact,
+            law,
+            t_vis,
+            eps: EPS,
+            scales,
+            params,
+            beta_end: 0.0,
+            energy_bound: 0.0,
+            options: SolverOptions::default(),
+        };
+        c.set_eps(EPS)?;
+        Ok(c)
+    }
+
+    fn set_eps(&mut self, eps: f64) -> Result<(), DynamicsError> {
+        let k = self.law.k();
+        if !(eps.is_finite() && eps > 0.0 && eps < 1.0 && (1.0 + eps) * k < (1.0 - eps) / k) {
+            return Err(OutOfRange::new(
+                "eps",
+                eps,
+                "0 < eps < 1 with (1 + eps) k < (1 - eps)/k",
+                "dimensionless",
+            )
+            .into());
+        }
+        self.eps = eps;
+        self.beta_end = (1.0 - eps) / k;
+        self.energy_bound = model::end_energy_bound(self.beta_end);
+        Ok(())
+    }
+
+    /// The same collider with another eps (start at beta = (1 + eps) k, end at (1 - eps)/k).
+    pub fn with_eps(mut self, eps: f64) -> Result<Self, DynamicsError> {
+        self.set_eps(eps)?;
+        Ok(self)
+    }
+
+    /// The same collider with other solver settings.
+    pub fn with_options(mut self, options: SolverOptions) -> Result<Self, DynamicsError> {
+        options.validate()?;
+        self.options = options;
+        Ok(self)
+    }
+
+    /// The contact (SI).
+    pub fn contact(&self) -> &Contact {
+        &self.contact
+    }
+
+    /// The crack law (its k).
+    pub fn law(&self) -> &CrackLaw {
+        &self.law
+    }
+
+    /// Relaxation time T_vis (s).
+    pub fn t_vis(&self) -> f64 {
+        self.t_vis
+    }
+
+    /// The nondimensional units.
+    pub fn scales(&self) -> &Scales {
+        &self.scales
+    }
+
+    /// The nondimensional parameters.
+    pub fn params(&self) -> &Params {
+        &self.params
+    }
+
+    /// Solver settings.
+    pub fn options(&self) -> &SolverOptions {
+        &self.options
+    }
+
+    /// beta at which the contact ends, (1 - eps)/k (dimensionless).
+    pub fn beta_end(&self) -> f64 {
+        self.beta_end
+    }
+
+    /// Smallest energy any end-of-contact state can have (J).
+    pub fn end_energy_bound(&self) -> f64 {
+        self.energy_bound * self.scales.e0
+    }
+
+    /// Nondimensional initial state for impact speed `v_in` (m/s).
+    pub(crate) fn initial_state(&self, v_in: f64) -> [f64; NSTATES] {
+        let x0 = self.contact.initial_contact_radius(self.law.k(), self.eps) / self.scales.a_eq;
+        [x0, 0.0, v_in / self.scales.v0, 0.0]
+    }
+
+    /// Integrates one collision at impact speed `v_in` (m/s, finite, > 0).
+    ///
+    /// # Example
+    /// ```
+    /// use contact::{Contact, Geometry, Material};
+    /// use dynamics::{Collider, Outcome};
+    /// use greenwood::CrackLaw;
+    /// // Section 4 (Figure 2): CO2, R1 = 60 um, T_vis = 1e-9 s, k = 0.01
+    /// let contact = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+    /// let collider = Collider::new(contact, CrackLaw::new(0.01)?, 1e-9)?;
+    /// assert_eq!(collider.collide(0.035)?.outcome, Outcome::Sticking); // 3.5 cm/s
+    /// assert_eq!(collider.collide(0.0405)?.outcome, Outcome::DoubleCollision); // 4.05 cm/s
+    /// let bounce = collider.collide(0.045)?; // 4.5 cm/s
+    /// assert_eq!(bounce.outcome, Outcome::Bouncing);
+    /// assert!(bounce.v_out < 0.0 && bounce.e > 0.0 && bounce.e < 1.0);
+    /// # Ok::<(), dynamics::DynamicsError>(())
+    /// ```
+    pub fn collide(&self, v_in: f64) -> Result<Collision, DynamicsError> {
+        if !(v_in.is_finite() && v_in > 0.0) {
+            return Err(OutOfRange::new("v_in", v_in, "> 0 and finite", "m/s").into());
+        }
+        let u = self.initial_state(v_in);
+        self.integrate(
+            v_in,
+            Start {
+                u,
+                h0: H0,
+                maxima: 0,
+                beta_max: model::beta(u[0], u[1]),
+                max_increase: 0.0,
+                rebound: None,
+            },
+        )
+    }
+
+    /// Continues a collision at impact speed `v_in` (m/s) from its `rebound` (for instance one
+    /// interpolated by [`Rebound::between`] from two collisions at nearby speeds): the same
+    /// outcome as [`Collider::collide`] for the part after the rebound, at a fraction of the
+    /// cost. The result's `steps` count the steps after the rebound; its trajectory starts there.
+    ///
+    /// # Example
+    /// ```
+    /// use contact::{Contact, Geometry, Material};
+    /// use dynamics::{Collider, Rebound};
+    /// use greenwood::CrackLaw;
+    /// let contact = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+    /// let collider = Collider::new(contact, CrackLaw::new(0.01)?, 1e-9)?;
+    /// // 4.500 and 4.504 cm/s bounce; their rebounds, interpolated, start one at 4.502 cm/s
+    /// let (a, b) = (collider.collide(0.04500)?, collider.collide(0.04504)?);
+    /// let rebound = Rebound::between(&a.rebound.unwrap(), &b.rebound.unwrap(), 0.04502).unwrap();
+    /// let full = collider.collide(0.04502)?;
+    /// let continued = collider.collide_from(0.04502, &rebound)?;
+    /// assert_eq!(full.outcome, continued.outcome);
+    /// assert!((full.v_out / continued.v_out - 1.0).abs() < 1e-6);
+    /// assert!(continued.steps < full.steps / 2);
+    /// # Ok::<(), dynamics::DynamicsError>(())
+    /// ```
+    pub fn collide_from(&self, v_in: f64, rebound: &Rebound) -> Result<Collision, DynamicsError> {
+        if !(v_in.is_finite() && v_in > 0.0) {
+            return Err(OutOfRange::new("v_in", v_in, "> 0 and finite", "m/s").into());
+        }
+        let rebound = Rebound { v_in, ..*rebound };
+        self.integrate(
+            v_in,
+            Start {
+                u: rebound.u,
+                h0: rebound.h,
+                maxima: rebound.maxima,
+                beta_max: rebound.beta_max,
+                max_increase: rebound.max_increase,
+                rebound: Some(rebound),
+            },
+        )
+    }
+
+    /// A solver failure at the initial state of `v_in` (m/s).
+    pub(crate) fn solver_error(&self, v_in: f64, e: impl std::fmt::Display) -> DynamicsError {
+        self.solver_error_at(v_in, &self.initial_state(v_in), e)
+    }
+
+    /// A solver failure at state `u` of the collision at `v_in` (m/s), with the message `e`.
+    pub(crate) fn solver_error_at(
+        &self,
+        v_in: f64,
+        u: &[f64; NSTATES],
+        e: impl std::fmt::Display,
+    ) -> DynamicsError {
+        let p = self.point(u);
+        DynamicsError::Solver {
+            geometry: *self.contact.geometry(),
+            t_vis: self.t_vis,
+            v_in,
+            t: p.t,
+            a: p.a,
+            delta: p.delta,
+            delta_dot: p.delta_dot,
+            beta: model::beta(u[0], u[1]),
+            message: e.to_string(),
+        }
+    }
+
+    /// State `u` in SI.
+    pub(crate) fn point(&self, u: &[f64; NSTATES]) -> TrajectoryPoint {
+        let s = &self.scales;
+        TrajectoryPoint {
+            t: u[3] * s.t0,
+            a: u[0] * s.a_eq,
+            delta: u[1] * s.delta_eq,
+            delta_dot: u[2] * s.v0,
+            energy: model::energy(u[0], u[1], u[2]) * s.e0,
+            beta: model::beta(u[0], u[1]),
+        }
+    }
+}

@@ -1,0 +1,86 @@
+//! What a collision gives: its [`Outcome`] (Section 4), how sticking was decided
+//! ([`StickingCriterion`]), the result [`Collision`] and the recorded [`TrajectoryPoint`]s (SI).
+
+use crate::Method;
+use crate::Rebound;
+
+/// Outcome of one collision (Section 4).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Outcome {
+    /// The contact never ends (e = 0).
+    Sticking,
+    /// The contact ends with `delta_dot > 0`: the spheres meet again at once (e < 0 computed).
+    DoubleCollision,
+    /// The contact ends with `delta_dot < 0`: the spheres fly apart (0 < e < 1).
+    Bouncing,
+}
+
+impl Outcome {
+    /// `sticking`, `double` or `bouncing`.
+    pub fn as_str(&self) -> &'static str {
+        match self {
+            Outcome::Sticking => "sticking",
+            Outcome::DoubleCollision => "double",
+            Outcome::Bouncing => "bouncing",
+        }
+    }
+}
+
+/// How a sticking outcome was decided.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum StickingCriterion {
+    /// The energy fell below the end-of-contact bound (rigorous).
+    EnergyBound,
+    /// The contact completed the allowed number of oscillations, or is bound to complete the
+    /// last of them (approaching with the crack advancing).
+    Oscillations,
+}
+
+/// One recorded state (SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TrajectoryPoint {
+    /// Time since first contact (s).
+    pub t: f64,
+    /// Contact radius a (m).
+    pub a: f64,
+    /// Mutual approach delta (m).
+    pub delta: f64,
+    /// Approach speed delta_dot (m/s).
+    pub delta_dot: f64,
+    /// Total energy (J).
+    pub energy: f64,
+    /// Normalized apparent surface energy beta = G_eff/gamma (dimensionless).
+    pub beta: f64,
+}
+
+/// Result of one collision (SI).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Collision {
+    /// Outcome.
+    pub outcome: Outcome,
+    /// Coefficient of restitution `e = -V_out/V_in` (0 for sticking; negative for double collisions).
+    pub e: f64,
+    /// Approach speed at the end of contact V_out (m/s; 0 for sticking).
+    pub v_out: f64,
+    /// Duration of the contact (s); `None` for sticking.
+    pub contact_time: Option<f64>,
+    /// How sticking was decided; `None` otherwise.
+    pub sticking_criterion: Option<StickingCriterion>,
+    /// Time at which the outcome was decided (s).
+    pub decided_at: f64,
+    /// Largest increase of the total energy between consecutive steps (J): an integration error
+    /// diagnostic, since the exact energy never increases.
+    pub max_energy_increase: f64,
+    /// Largest beta reached at a solver step (dimensionless): for a sticking collision, how close the
+    /// contact came to its end at beta = (1 - eps)/k.
+    pub beta_max: f64,
+    /// Solver steps taken (by `method`).
+    pub steps: usize,
+    /// The integrator that decided the outcome ([`Method::Auto`] resolved: Tsit45 or BDF).
+    pub method: Method,
+    /// Trajectory, when [`crate::SolverOptions::record_trajectory`] is set.
+    pub trajectory: Vec<TrajectoryPoint>,
+    /// Where the collision first crossed delta = 0 on its way out, if it did: the state
+    /// [`crate::Collider::collide_from`] continues a collision of a nearby impact speed from.
+    pub rebound: Option<Rebound>,
+}
