@@ -18,7 +18,7 @@
 //! second representation of the same table: |v| as cubic Hermite cells in `r = e^zeta`, 128 per
 //! octave of r, indexed by the bits of r (no logarithm, no exponential) and filled from the table
 //! the first time a trajectory enters an octave (about 0.01 ms each). It follows the table to
-//! 1e-9 relative ([`FAST_BITS`]).
+//! 1e-9 relative (`FAST_BITS`).
 //! Outside the table (alpha beyond its range) w is extrapolated linearly, which keeps v and its
 //! derivative finite, monotone and of the right sign up to the bounds.
 

@@ -6,7 +6,7 @@
 //! - [`OutOfRange`] (with [`positive`]): the one "bad input" error. Every crate above wraps it
 //!   with `#[from]`, so a bad argument reads the same wherever it is caught, in Rust, in the CLI
 //!   (`--radius = -1.0: must be > 0 and finite (m)`) and in Python (`radius[1] = nan: ...`).
-//! - [`format`]: the one number format, the shortest form that reads back to the same `f64`, as
+//! - [`mod@format`]: the one number format, the shortest form that reads back to the same `f64`, as
 //!   JSON writes it (`0.00006`, `1e-9`, `60.0`), used by messages, reports, CSV and JSON alike.
 //! - [`roots`]: the one bracketing root finder for smooth functions (Illinois), used by the
 //!   crack-law inversion (`greenwood`), the end of contact inside a solver step (`dynamics`)

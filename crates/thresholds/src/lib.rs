@@ -33,18 +33,21 @@
 //! for its uncertainty (Sections 5.1-5.2).
 //!
 //! ## Map
-//! - [`stick`]: [`sticking_thresholds`] (V_stick and the onset of double collisions): a
-//!   bracket, secant steps on V_out for V_stick and trisection for the onset, on a ladder of
-//!   solver tolerances that ends at the search's own, capped at `v_max`; [`sweep_t_vis`] chains
-//!   searches over T_vis with hints from the neighbours.
+//! - [`stick`]: [`sticking_thresholds`] (V_stick and the onset of double collisions), its
+//!   options and the rule that turns the collisions of a search into the two thresholds;
+//!   [`sweep_t_vis`] chains searches over T_vis with hints from the neighbours.
+//! - [`search`]: how a search chooses its impact speeds: the first bracket, secant steps on
+//!   V_out for V_stick and trisection for the onset, on a ladder of solver tolerances, with
+//!   rebound restarts and [`Hint`]s.
 //! - [`fit`]: [`fit_t_vis`], the inverse problem.
 //! - [`laws`]: [`TVisLaw`], [`v_frag`] and [`fragmentation`].
-//! - [`sweep`]: grids of searches in chunks that keep their hints, shared by the CLI and the
-//!   Python package.
+//! - [`sweep`]: grids of searches in chunks that keep their hints, their axes and their rows,
+//!   shared by the CLI and the Python package.
 
 pub mod error;
 pub mod fit;
 pub mod laws;
+pub mod search;
 pub mod stick;
 pub mod sweep;
 
@@ -59,6 +62,6 @@ pub use greenwood::{CrackLaw, GreenwoodError};
 pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
 pub use numerics::OutOfRange;
 pub use stick::{
-    neighbours, sticking_thresholds, sweep_t_vis, Hint, HintChain, SearchOptions,
-    StickingThresholds, DEFAULT_V_MAX_OVER_JKR, HINT_NEIGHBOURS, HINT_SPREAD_ONE, V_SEARCH_LIMIT,
+    sticking_thresholds, sweep_t_vis, Hint, HintChain, SearchOptions, StickingThresholds,
+    DEFAULT_REL_TOL, DEFAULT_V_MAX_OVER_JKR, HINT_NEIGHBOURS, HINT_SPREAD_ONE, V_SEARCH_LIMIT,
 };

@@ -317,7 +317,7 @@ impl Chunk {
 
     /// Computes the points from `start` on, calling `done` with each row as it is found.
     /// `previous` holds the thresholds of the points just before `start` (the last
-    /// [`HINT_NEIGHBOURS`] or fewer,
+    /// [`crate::HINT_NEIGHBOURS`] or fewer,
     /// as `(t_vis, hint)` from [`Row::hint`]; empty for a fresh chunk), which seed the first
     /// search as they would have in an uninterrupted run. `laws(k)` gives the crack law of a k
     /// (build each once and share it).
