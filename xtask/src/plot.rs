@@ -35,7 +35,7 @@ type LogAxis = WithKeyPoints<LogCoord<f64>>;
 type LogLog<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<LogAxis, LogAxis>>;
 
 /// Tick values of a log axis over `[lo, hi]`: each decade, and 2 and 5 of each decade when the
-/// axis spans fewer than [`FEW_DECADES`] decades.
+/// axis spans fewer than `FEW_DECADES` decades.
 pub fn log_ticks(lo: f64, hi: f64) -> Vec<f64> {
     let mantissas: &[f64] = if (hi / lo).log10() < FEW_DECADES {
         &[1.0, 2.0, 5.0]
