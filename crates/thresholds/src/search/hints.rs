@@ -17,16 +17,20 @@ pub const HINT_SPREAD_ONE: f64 = 0.1;
 /// from 1e-12 to 1e-8 s) the extrapolation of [`Hint::extrapolated`] was off by at most 0.34 of
 /// its step (0.01-0.03 below T_vis = 1e-9 s, where the thresholds follow the power law closely),
 /// on 11 T_vis per 4 decades by up to 0.75 of it at 1e-8 s (`docs/performance.md`, item 20).
+/// Re-measured over five sweeps (CO2 k = 0.01, 0.02 and on a wall, H2O at two gamma_SV): the
+/// three spread constants together save 8 % of the steps against a spread of 0.1 for every
+/// hint (`docs/performance.md`, "Search constants re-measured").
 const HINT_SPREAD_PER_STEP: f64 = 0.75;
 /// The smallest spread of an extrapolated hint: just wide enough for the first round to run on
 /// the second rung of the tolerance ladder (a spread above [`LADDER_MARGIN`] times its shift),
 /// a third cheaper from first contact than the third. Over the sweeps of
 /// [`HINT_SPREAD_PER_STEP`], floors of 1e-4 (first rounds on the third rung), 1e-3 and 2e-3
-/// took 2-3 % more steps.
+/// took 2-3 % more steps; re-measured over five sweeps, 1e-4 took 2 % more.
 const HINT_SPREAD_MIN: f64 = 1.02 * LADDER_MARGIN * LADDER[1].shift;
 /// The spread of an extrapolated hint per miss of the same extrapolation one point earlier:
 /// the misses grew by at most a factor 1.9 from one point to the next over the sweeps of
-/// [`HINT_SPREAD_PER_STEP`] (`docs/performance.md`, item 20).
+/// [`HINT_SPREAD_PER_STEP`] (`docs/performance.md`, item 20). Without it (the spread from the
+/// step alone) five sweeps took 4 % more steps.
 const HINT_SPREAD_PER_MISS: f64 = 3.0;
 /// How many previous points of a sweep seed the hint of the next ([`Hint::extrapolated`]).
 pub const HINT_NEIGHBOURS: usize = 3;

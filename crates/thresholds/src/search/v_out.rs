@@ -9,6 +9,7 @@
 //! nearest to V_out = 0, which closes the bracket; wider pairs or trisection continue at full
 //! tolerance when a pair does not straddle V_stick ([`Search::closing_jobs`]).
 
+use super::ladder::LADDER;
 use super::{trisect, Search, Seen, Transition};
 use crate::ThresholdsError;
 use dynamics::Outcome;
@@ -16,7 +17,9 @@ use dynamics::Outcome;
 /// The rung of the coarse secant steps once the bracket is narrower than the coarsest rung
 /// allows: rtol 1e-5, a third of the cost of full tolerance, with V_out accurate to about 1e-5,
 /// matched to the first full-tolerance pair ([`TIGHT_PAIR_HALF_WIDTH`] is its shift). While the
-/// bracket is wider, the coarsest rung trisects it.
+/// bracket is wider, the coarsest rung trisects it. Letting the secant steps move on to the
+/// next rung as the bracket narrows took 2 % more steps over five sweeps (CO2 and H2O, 25-41
+/// T_vis each; `docs/performance.md`, "Search constants re-measured").
 const SECANT_RUNG: usize = 1;
 /// Coarse steps on V_out at most (trisection until a secant root falls inside the bracket, then
 /// secant steps), before the full-tolerance pairs take over: trisecting a bracket of a factor 1.5
@@ -28,9 +31,10 @@ const SECANT_SETTLED: f64 = 3e-5;
 /// Each coarse secant step also integrates a speed this much above its estimate (relative), so
 /// that the next step has a secant through two close speeds.
 const SECANT_PROBE: f64 = 1e-3;
-/// Half-width (relative) of the first full-tolerance pair around a coarse estimate: twice the
-/// largest shift of the secant rung measured (7e-5), so that the pair straddles V_stick.
-pub(crate) const TIGHT_PAIR_HALF_WIDTH: f64 = 1.5e-4;
+/// Half-width (relative) of the first full-tolerance pair around a coarse estimate: the shift
+/// bound of the secant rung, twice the largest shift measured there (7e-5), so that the pair
+/// straddles V_stick.
+pub(crate) const TIGHT_PAIR_HALF_WIDTH: f64 = LADDER[SECANT_RUNG].shift;
 /// Half-width of a closing pair of V_stick, relative to the search's `rel_tol`: a pair around a
 /// root estimate that straddles V_stick is then a final bracket (narrower than `rel_tol`), and
 /// it tolerates an estimate 0.45 `rel_tol` off (the secant through two full-tolerance collisions
