@@ -10,6 +10,7 @@ use greenwood::CrackLaw;
 use numerics::format::number;
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use thresholds::sweep::geomspace;
 use thresholds::{
     fit_t_vis, sticking_thresholds, sweep_t_vis, v_frag, SearchOptions, StickingThresholds,
     TVisFit, TVisLaw,
@@ -76,16 +77,6 @@ pub const GAMMAS_H2O: [f64; 4] = [0.02, 0.05, 0.1, 0.19];
 pub const FIG2_V_IN: [f64; 3] = [0.035, 0.0405, 0.045];
 /// T_vis of Figures 2 and 3 (s).
 pub const FIG2_T_VIS: f64 = 1e-9;
-
-/// `n` points from `a` to `b`, evenly spaced in log.
-pub fn logspace(a: f64, b: f64, n: usize) -> Vec<f64> {
-    if n == 1 {
-        return vec![a];
-    }
-    (0..n)
-        .map(|i| a * (b / a).powf(i as f64 / (n - 1) as f64))
-        .collect()
-}
 
 /// `n` points from `a` to `b`, evenly spaced.
 pub fn linspace(a: f64, b: f64, n: usize) -> Vec<f64> {
@@ -166,7 +157,7 @@ impl Figure1 {
             };
             Ok(CrackLawCurve {
                 k,
-                full: eval(logspace(lo, hi, n))?,
+                full: eval(geomspace(lo, hi, n))?,
                 zoom: eval(linspace(0.95, 1.05, nz))?,
             })
         })?;
@@ -456,7 +447,7 @@ impl Figure4 {
     /// Computes the figure.
     pub fn compute(res: Resolution, progress: Progress) -> Result<Self, Error> {
         let c = co2_contact(CO2_EXPERIMENT.r1)?;
-        let t_vis = logspace(1e-12, 1e-8, res.pick(33, 3));
+        let t_vis = geomspace(1e-12, 1e-8, res.pick(33, 3));
         // one sweep over T_vis per k (each search seeded by its neighbour), the k in parallel
         let curves = par_map("fig4", &KS, progress, |&k| {
             Ok(ThresholdCurve {
@@ -512,7 +503,7 @@ impl Figure5 {
     /// Computes the figure.
     pub fn compute(res: Resolution, progress: Progress) -> Result<Self, Error> {
         let law = CrackLaw::new(K)?;
-        let t_vis = logspace(1e-12, 1e-7, res.pick(41, 3));
+        let t_vis = geomspace(1e-12, 1e-7, res.pick(41, 3));
         // one sweep over T_vis per gamma_SV (each search seeded by its neighbour), in parallel
         let curves = par_map("fig5", &GAMMAS_H2O, progress, |&g| {
             let c = Contact::new(h2o_with(g), Geometry::identical(H2O_EXPERIMENT.r1))?;
@@ -624,7 +615,7 @@ impl Figure6 {
             t_vis_min: t_g,
             t_vis_max: t_g,
         });
-        let laws = logspace(1e-7, 1e-3, res.pick(41, 3))
+        let laws = geomspace(1e-7, 1e-3, res.pick(41, 3))
             .into_iter()
             .map(|r1| (r1, TVisLaw::Co2.t_vis(r1), TVisLaw::H2o.t_vis(r1)))
             .collect();
@@ -713,7 +704,7 @@ impl Figure7 {
             density: 1650.0,
             ..Material::co2()
         };
-        let r1s = logspace(1e-7, 1e-4, res.pick(25, 3));
+        let r1s = geomspace(1e-7, 1e-4, res.pick(25, 3));
         let jobs: Vec<(f64, TVisLaw)> = r1s
             .iter()
             .flat_map(|&r| [TVisLaw::Co2, TVisLaw::H2o].map(|l| (r, l)))
@@ -796,7 +787,7 @@ impl FigureWall {
     pub fn compute(res: Resolution, progress: Progress) -> Result<Self, Error> {
         let law = CrackLaw::new(K)?;
         let e = CO2_EXPERIMENT;
-        let t_vis = logspace(1e-12, 1e-8, res.pick(33, 3));
+        let t_vis = geomspace(1e-12, 1e-8, res.pick(33, 3));
         let geometries = [Geometry::identical(e.r1), Geometry::wall(e.r1)];
         let out = par_map("fig_wall", &[0usize, 1], progress, |&i| {
             let c = Contact::new(Material::co2(), geometries[i])?;

@@ -44,6 +44,12 @@ impl From<OutOfRange> for CliError {
     }
 }
 
+impl From<thresholds::sweep::AxisError> for CliError {
+    fn from(e: thresholds::sweep::AxisError) -> Self {
+        CliError::Usage(e.to_string())
+    }
+}
+
 impl From<ContactError> for CliError {
     fn from(e: ContactError) -> Self {
         match e {

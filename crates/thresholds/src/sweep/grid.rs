@@ -1,16 +1,7 @@
-//! Sweeps: V_stick, V_frag and their companions over a grid of materials, surface energies,
-//! radii, partner radii, relaxation times and k.
-//!
-//! The grid is the product of its axes in the order material, gamma_sv, radius, radius2, t_vis,
-//! k (outermost first); [`Grid::index`] numbers its points in that order. It is computed in
-//! [`Chunk`]s: one chunk holds every T_vis of one combination of the other axes, in increasing
-//! order of the T_vis axis, and each search after the first is seeded with its neighbour's
-//! thresholds, extrapolated from the previous two (as [`crate::sweep_t_vis`]). Every front end (the CLI's `stickiness sweep`, the
-//! Python `stickiness.sweep` in process or on a Dask cluster) computes the same chunks the same
-//! way, so they give the same numbers, and a chunk computed twice (a retried task, a resumed
-//! file) gives the same rows. A chunk can start part-way, from the hint its last completed row
-//! gives ([`Chunk::compute_from`]): a resumed sweep equals an uninterrupted one.
+//! The grid of a sweep: its axes ([`Grid`]), its points in grid order ([`Point`]) and its unit of
+//! work ([`Chunk`]), with the crack laws of its k values built once ([`Laws`]).
 
+use super::Row;
 use crate::laws::{v_frag, TVisLaw};
 use crate::stick::{sticking_thresholds, Hint, HintChain, SearchOptions, StickingThresholds};
 use crate::ThresholdsError;
@@ -82,32 +73,6 @@ pub struct Point {
     pub k: f64,
 }
 
-/// The results of one point (SI); `None` where a value does not exist.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Row {
-    /// The point.
-    pub point: Point,
-    /// V_stick (m/s).
-    pub v_stick: Option<f64>,
-    /// V_double_onset (m/s).
-    pub v_double_onset: Option<f64>,
-    /// V_stick,JKR (m/s).
-    pub v_stick_jkr: f64,
-    /// V_frag = 10 V_stick (m/s).
-    pub v_frag: Option<f64>,
-    /// The search limit when nothing bounced (m/s).
-    pub no_bouncing_below: Option<f64>,
-    /// The model's warnings for this point.
-    pub warnings: Vec<String>,
-}
-
-impl Row {
-    /// This row's thresholds as a hint for the next T_vis of its chunk.
-    pub fn hint(&self) -> Option<Hint> {
-        Some(Hint::from_neighbour(self.v_double_onset?, self.v_stick?))
-    }
-}
-
 /// All T_vis of one combination of the other axes: the unit of work of a sweep.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Chunk {
@@ -158,6 +123,11 @@ impl Grid {
             * self.n_radius2()
             * self.n_t_vis()
             * self.k.len()
+    }
+
+    /// Number of chunks: one per combination of every axis but T_vis ([`Grid::chunks`]).
+    pub fn n_chunks(&self) -> usize {
+        self.materials.len() * self.n_gamma() * self.radius.len() * self.n_radius2() * self.k.len()
     }
 
     /// Whether the grid has no point.
@@ -318,7 +288,7 @@ impl Chunk {
     /// Computes the points from `start` on, calling `done` with each row as it is found.
     /// `previous` holds the thresholds of the points just before `start` (the last
     /// [`crate::HINT_NEIGHBOURS`] or fewer,
-    /// as `(t_vis, hint)` from [`Row::hint`]; empty for a fresh chunk), which seed the first
+    /// as `(t_vis, hint)`, [`crate::sweep::hint_of`] of their rows; empty for a fresh chunk), which seed the first
     /// search as they would have in an uninterrupted run. `laws(k)` gives the crack law of a k
     /// (build each once and share it).
     pub fn compute_from(
@@ -346,33 +316,10 @@ impl Chunk {
                 no_bouncing_below: th.no_bouncing_below(),
                 warnings: contact.warnings().iter().map(|w| w.to_string()).collect(),
             };
-            chain.push(p.t_vis, row.hint());
+            chain.push(p.t_vis, th.as_hint());
             done(&row);
             rows.push(row);
         }
         Ok(rows)
     }
 }
-
-/// The columns of a sweep's rows, in order: the inputs, then the results.
-pub const COLUMNS: [&str; 16] = [
-    "material",
-    "gamma_sv",
-    "young",
-    "poisson",
-    "density",
-    "radius",
-    "radius2",
-    "wall",
-    "t_vis",
-    "k",
-    "v_stick",
-    "v_double_onset",
-    "v_stick_jkr",
-    "v_frag",
-    "no_bouncing_below",
-    "warnings",
-];
-
-/// The SI units of [`COLUMNS`], for headers.
-pub const UNITS: &str = "gamma_sv [J/m^2], young [Pa], poisson [dimensionless], density [kg/m^3], radius, radius2 [m], t_vis [s], k [dimensionless], v_stick, v_double_onset, v_stick_jkr, v_frag, no_bouncing_below [m/s]";

@@ -1,0 +1,236 @@
+//! The rows of a sweep and their file form: the columns ([`COLUMNS`], [`UNITS`]), the header
+//! that identifies a sweep ([`header_lines`], [`header_text`]), one row as one line of CSV or
+//! JSON Lines ([`row_text`]), and the hint a written row gives the next point of its chunk
+//! ([`hint_of`]), so that a resumed file equals an uninterrupted one byte for byte.
+//!
+//! CSV goes through the `csv` crate: a field is quoted when it holds a comma, a quote, a line
+//! break or `#` (so that `pandas.read_csv(path, comment="#")` reads it whole); numbers are
+//! written in the workspace's one format ([`numerics::format::number`]); an empty field has no
+//! value.
+
+use super::{Grid, Point};
+use crate::Hint;
+use numerics::format::number;
+
+/// The results of one point (SI); `None` where a value does not exist.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// The point.
+    pub point: Point,
+    /// V_stick (m/s).
+    pub v_stick: Option<f64>,
+    /// V_double_onset (m/s).
+    pub v_double_onset: Option<f64>,
+    /// V_stick,JKR (m/s).
+    pub v_stick_jkr: f64,
+    /// V_frag = 10 V_stick (m/s).
+    pub v_frag: Option<f64>,
+    /// The search limit when nothing bounced (m/s).
+    pub no_bouncing_below: Option<f64>,
+    /// The model's warnings for this point.
+    pub warnings: Vec<String>,
+}
+
+/// The columns of a sweep's rows, in order: the inputs, then the results.
+pub const COLUMNS: [&str; 16] = [
+    "material",
+    "gamma_sv",
+    "young",
+    "poisson",
+    "density",
+    "radius",
+    "radius2",
+    "wall",
+    "t_vis",
+    "k",
+    "v_stick",
+    "v_double_onset",
+    "v_stick_jkr",
+    "v_frag",
+    "no_bouncing_below",
+    "warnings",
+];
+
+/// The SI units of [`COLUMNS`], for headers.
+pub const UNITS: &str = "gamma_sv [J/m^2], young [Pa], poisson [dimensionless], density [kg/m^3], radius, radius2 [m], t_vis [s], k [dimensionless], v_stick, v_double_onset, v_stick_jkr, v_frag, no_bouncing_below [m/s]";
+
+/// The file formats of a sweep.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    /// Comma-separated values after `#` header lines (pandas: `read_csv(path, comment="#")`).
+    Csv,
+    /// One JSON object a line, after a first line `{"sweep": {"header": [...], "columns": [...]}}`.
+    Jsonl,
+}
+
+impl Format {
+    /// `csv` or `jsonl`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Format::Csv => "csv",
+            Format::Jsonl => "jsonl",
+        }
+    }
+}
+
+/// The header lines that identify a sweep of `grid` made by `command` (the command line as it
+/// determines the rows, with axes in [`super::canonical`] form): what the file is, the command,
+/// the grid's order and size, the units, and what an empty field means. No timestamps: the same
+/// sweep gives the same bytes.
+pub fn header_lines(command: &str, grid: &Grid) -> Vec<String> {
+    vec![
+        "stickiness sweep: V_stick, V_double_onset, V_stick,JKR and V_frag = 10 V_stick over a grid (Arakawa & Krijt 2021)".to_string(),
+        format!("command: {command}"),
+        format!(
+            "grid: material, gamma_sv, radius, radius2, t_vis, k (outermost first), {} points; each T_vis seeded by its neighbour's thresholds",
+            grid.len()
+        ),
+        format!("units: {UNITS}"),
+        "an empty field has no value: v_stick, v_double_onset, v_frag without bouncing up to no_bouncing_below (else empty); radius2 on a wall".into(),
+    ]
+}
+
+/// The header as written at the top of a file: `# ` lines and the column names (CSV), or one
+/// JSON line holding both.
+pub fn header_text(format: Format, lines: &[String]) -> String {
+    match format {
+        Format::Csv => {
+            let mut out: String = lines.iter().map(|l| format!("# {l}\n")).collect();
+            out.push_str(&COLUMNS.join(","));
+            out.push('\n');
+            out
+        }
+        Format::Jsonl => {
+            let value = serde_json::json!({"sweep": {"header": lines, "columns": COLUMNS}});
+            format!("{value}\n")
+        }
+    }
+}
+
+/// One CSV record as a line, quoted where needed (see the module documentation).
+fn csv_line(fields: &[String]) -> String {
+    let mut writer = csv::WriterBuilder::new()
+        .comment(Some(b'#'))
+        .from_writer(Vec::new());
+    // writing to a Vec cannot fail, and every field is UTF-8
+    let bytes = writer
+        .write_record(fields)
+        .ok()
+        .and_then(|()| writer.into_inner().ok())
+        .unwrap_or_default();
+    String::from_utf8(bytes).unwrap_or_default()
+}
+
+/// One row of `grid` as a line of the file (with its line break).
+pub fn row_text(format: Format, grid: &Grid, row: &Row) -> String {
+    let p = &row.point;
+    let m = &p.constants;
+    let name = &grid.materials[p.material].name;
+    let radius2 = p.geometry.r2();
+    match format {
+        Format::Csv => {
+            let opt = |v: Option<f64>| v.map_or(String::new(), number);
+            csv_line(&[
+                name.clone(),
+                number(m.gamma_sv),
+                number(m.young),
+                number(m.poisson),
+                number(m.density),
+                number(p.geometry.r1()),
+                opt(radius2),
+                p.geometry.is_wall().to_string(),
+                number(p.t_vis),
+                number(p.k),
+                opt(row.v_stick),
+                opt(row.v_double_onset),
+                number(row.v_stick_jkr),
+                opt(row.v_frag),
+                opt(row.no_bouncing_below),
+                row.warnings.join("; "),
+            ])
+        }
+        Format::Jsonl => {
+            let value = serde_json::json!({
+                "material": name,
+                "gamma_sv": m.gamma_sv,
+                "young": m.young,
+                "poisson": m.poisson,
+                "density": m.density,
+                "radius": p.geometry.r1(),
+                "radius2": radius2,
+                "wall": p.geometry.is_wall(),
+                "t_vis": p.t_vis,
+                "k": p.k,
+                "v_stick": row.v_stick,
+                "v_double_onset": row.v_double_onset,
+                "v_stick_jkr": row.v_stick_jkr,
+                "v_frag": row.v_frag,
+                "no_bouncing_below": row.no_bouncing_below,
+                "warnings": row.warnings,
+            });
+            format!("{value}\n")
+        }
+    }
+}
+
+/// The hint a written row (one line of the file, without its line break) gives the next point
+/// of its chunk: its two thresholds, when it has both.
+pub fn hint_of(format: Format, line: &str) -> Option<Hint> {
+    let (onset, stick) = match format {
+        Format::Csv => {
+            let record = csv::ReaderBuilder::new()
+                .has_headers(false)
+                .from_reader(line.as_bytes())
+                .records()
+                .next()?
+                .ok()?;
+            let at = |name: &str| -> Option<f64> {
+                let i = COLUMNS.iter().position(|c| *c == name)?;
+                record.get(i)?.parse().ok()
+            };
+            (at("v_double_onset"), at("v_stick"))
+        }
+        Format::Jsonl => {
+            let v: serde_json::Value = serde_json::from_str(line).ok()?;
+            (v["v_double_onset"].as_f64(), v["v_stick"].as_f64())
+        }
+    };
+    Hint::from_thresholds(onset, stick)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// RFC 4180 quoting, and `#` quoted so that pandas' `comment="#"` cannot cut a row.
+    #[test]
+    fn csv_fields_are_quoted_where_needed() {
+        let line = csv_line(&[
+            "co2".into(),
+            "a, b".into(),
+            "say \"hi\"".into(),
+            "#1".into(),
+            String::new(),
+        ]);
+        assert_eq!(line, "co2,\"a, b\",\"say \"\"hi\"\"\",\"#1\",\n");
+    }
+
+    /// A written CSV row reads back to its thresholds (quoted fields before them included).
+    #[test]
+    fn hints_read_back_from_rows() {
+        let mut fields = vec![String::new(); COLUMNS.len()];
+        fields[0] = "odd, \"name\"".into();
+        fields[10] = "0.0414".into(); // v_stick
+        fields[11] = "0.0403".into(); // v_double_onset
+        let line = csv_line(&fields);
+        let h = hint_of(Format::Csv, line.trim_end()).unwrap();
+        assert_eq!((h.v_double_onset, h.v_stick), (0.0403, 0.0414));
+        fields[10] = String::new();
+        assert_eq!(hint_of(Format::Csv, csv_line(&fields).trim_end()), None);
+        let json = r#"{"v_stick": 0.0414, "v_double_onset": 0.0403}"#;
+        assert_eq!(
+            hint_of(Format::Jsonl, json).map(|h| h.v_stick),
+            Some(0.0414)
+        );
+    }
+}
