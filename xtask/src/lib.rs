@@ -6,7 +6,6 @@
 //! parameter grids of each figure, the CSV format and the pictures.
 
 pub mod figures;
-pub mod plot;
 pub mod table;
 pub mod test;
 

@@ -8,7 +8,7 @@ use std::process::ExitCode;
 use std::sync::Mutex;
 use std::time::Instant;
 use xtask::figures::{self, Figures, Resolution};
-use xtask::{compare_with_committed, plot, workspace_root, CHECK_REL_TOL, CSV_DIGITS};
+use xtask::{compare_with_committed, workspace_root, CHECK_REL_TOL, CSV_DIGITS};
 
 /// Project automation for the stickiness workspace.
 #[derive(Debug, Parser)]
@@ -109,7 +109,7 @@ fn run_figures(check: bool) -> Result<(), figures::Error> {
     for table in &tables {
         std::fs::write(data.join(&table.file), table.to_csv(CSV_DIGITS))?;
     }
-    plot::draw_all(&figs, &root.join("docs").join("figures"))?;
+    figs.draw_all(&root.join("docs").join("figures"))?;
     eprintln!(
         "wrote data/fig*.csv and docs/figures/fig*.svg in {:.1} s",
         start.elapsed().as_secs_f64()

@@ -16,6 +16,23 @@ pub enum Outcome {
 }
 
 impl Outcome {
+    /// The coefficient of restitution an experiment observes for a collision of this outcome
+    /// whose first contact gives `e = -V_out/V_in`: `e` for bouncing; 0 for sticking and for a
+    /// double collision, whose second contact follows at once and sticks (Section 4.4).
+    ///
+    /// ```
+    /// use dynamics::Outcome;
+    /// assert_eq!(Outcome::Bouncing.observed_e(0.3), 0.3);
+    /// assert_eq!(Outcome::DoubleCollision.observed_e(-0.1), 0.0);
+    /// ```
+    pub fn observed_e(self, e: f64) -> f64 {
+        if self == Outcome::Bouncing {
+            e
+        } else {
+            0.0
+        }
+    }
+
     /// `sticking`, `double` or `bouncing`.
     pub fn as_str(&self) -> &'static str {
         match self {
@@ -83,4 +100,12 @@ pub struct Collision {
     /// Where the collision first crossed delta = 0 on its way out, if it did: the state
     /// [`crate::Collider::collide_from`] continues a collision of a nearby impact speed from.
     pub rebound: Option<Rebound>,
+}
+
+impl Collision {
+    /// The coefficient of restitution an experiment observes ([`Outcome::observed_e`]): `e` for
+    /// bouncing, 0 for sticking and double collisions (Section 4.4).
+    pub fn observed_e(&self) -> f64 {
+        self.outcome.observed_e(self.e)
+    }
 }

@@ -41,12 +41,14 @@
 //!   rebound restarts and [`Hint`]s.
 //! - [`fit`]: [`fit_t_vis`], the inverse problem.
 //! - [`laws`]: [`TVisLaw`], [`v_frag`] and [`fragmentation`].
+//! - [`paper`]: the measurements the paper compares with (Musiolik 2016a/b, Gundlach 2015).
 //! - [`sweep`]: grids of searches in chunks that keep their hints, their axes and their rows,
 //!   shared by the CLI and the Python package.
 
 pub mod error;
 pub mod fit;
 pub mod laws;
+pub mod paper;
 pub mod search;
 pub mod stick;
 pub mod sweep;
@@ -61,6 +63,12 @@ pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_
 pub use greenwood::{CrackLaw, GreenwoodError};
 pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
 pub use numerics::OutOfRange;
+/// Default radius R1 (m) of the CLI and the Python package: the typical CO2 grain of Musiolik et
+/// al. (2016a), [`paper::MUSIOLIK_2016A`].
+pub const DEFAULT_RADIUS: f64 = paper::MUSIOLIK_2016A.radius;
+/// Default modulus ratio k (dimensionless): the paper's fiducial value (Section 2.3).
+pub const DEFAULT_K: f64 = 0.01;
+
 pub use stick::{
     sticking_thresholds, sweep_t_vis, Hint, HintChain, SearchOptions, StickingThresholds,
     DEFAULT_REL_TOL, DEFAULT_V_MAX_OVER_JKR, HINT_NEIGHBOURS, HINT_SPREAD_ONE, V_SEARCH_LIMIT,

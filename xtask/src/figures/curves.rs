@@ -1,0 +1,113 @@
+//! V_stick against T_vis along one parameter ([`ThresholdCurve`]) and its chart, shared by
+//! Figures 4 and 5 and the sphere-on-wall figure.
+
+use super::chart::*;
+use super::Error;
+use numerics::format::number;
+use plotters::prelude::*;
+use std::path::Path;
+use thresholds::StickingThresholds;
+
+/// V_stick against T_vis for one value of a parameter (k, gamma_SV or the geometry).
+#[derive(Debug, Clone)]
+pub struct ThresholdCurve {
+    /// The parameter of the curve (k, gamma_SV in J/m^2; 0 and 1 for identical spheres and a
+    /// wall in the wall figure).
+    pub parameter: f64,
+    /// V_stick,JKR of the curve's contact (m/s).
+    pub v_stick_jkr: f64,
+    /// One search per T_vis, in increasing T_vis.
+    pub points: Vec<StickingThresholds>,
+}
+
+impl ThresholdCurve {
+    /// `(T_vis, V_stick)` where V_stick exists.
+    pub fn v_stick(&self) -> Vec<(f64, f64)> {
+        self.points
+            .iter()
+            .filter_map(|p| Some((p.t_vis, p.v_stick?)))
+            .collect()
+    }
+}
+
+/// V_stick against T_vis: one line per curve, the experimental band and the JKR stars.
+pub fn v_stick_chart(
+    path: &Path,
+    caption: &str,
+    curves: &[(String, &ThresholdCurve)],
+    (x0, x1): (f64, f64),
+    band: Option<(f64, f64)>,
+    line_at: f64,
+    experiment: &str,
+) -> Result<(), Error> {
+    let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
+    root.fill(&WHITE)?;
+    let values = curves
+        .iter()
+        .flat_map(|(_, c)| c.v_stick().into_iter().map(|p| p.1).chain([c.v_stick_jkr]))
+        .chain([line_at])
+        .chain(band.map_or(vec![], |(a, b)| vec![a, b]));
+    let y = log_range(values);
+    let mut chart = log_log(
+        &root,
+        caption,
+        (x0, x1),
+        y,
+        "relaxation time T_vis (s)",
+        "threshold velocity for sticking V_stick (m/s)",
+    )?;
+    if let Some((lo, hi)) = band {
+        chart
+            .draw_series(std::iter::once(Rectangle::new(
+                [(x0, lo), (x1, hi)],
+                BAND.mix(0.5).filled(),
+            )))?
+            .label("experimental range")
+            .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], BAND.filled()));
+    }
+    chart
+        .draw_series(LineSeries::new(
+            [(x0, line_at), (x1, line_at)],
+            BLACK.stroke_width(1),
+        ))?
+        .label(experiment.to_string())
+        .legend(legend_line(BLACK));
+    for (j, (name, c)) in curves.iter().enumerate() {
+        let col = COLOURS[j % COLOURS.len()];
+        let pts = c.v_stick();
+        let end = pts.last().copied();
+        chart
+            .draw_series(LineSeries::new(pts, col.stroke_width(2)))?
+            .label(name.clone())
+            .legend(legend_line(col));
+        // where no collision bounces any more the curve ends: mark its last point
+        if c.points.last().is_some_and(|p| p.v_stick.is_none()) {
+            if let Some(p) = end {
+                chart.draw_series(std::iter::once(Cross::new(p, 6, col.stroke_width(2))))?;
+            }
+        }
+    }
+    // one star per distinct V_stick,JKR, named after its curve when they differ
+    let mut jkr: Vec<(f64, &str)> = curves
+        .iter()
+        .map(|(n, c)| (c.v_stick_jkr, n.as_str()))
+        .collect();
+    jkr.dedup_by(|a, b| a.0 == b.0);
+    for &(v, name) in &jkr {
+        let whose = if jkr.len() > 1 {
+            format!(" ({name})")
+        } else {
+            String::new()
+        };
+        chart
+            .draw_series(star!(x0 * 1.15, v, BLACK))?
+            .label(format!(
+                "V_stick,JKR = {} m/s{whose}",
+                number(round_to(v, 3))
+            ))
+            .legend(|(x, y)| TriangleMarker::new((x + 10, y), 6, BLACK.filled()));
+    }
+    legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
+    root.present()?;
+    Ok(())
+}

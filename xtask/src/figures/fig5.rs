@@ -1,0 +1,92 @@
+//! Figure 5: V_stick against T_vis for H2O grains of 90 um and several gamma_SV, with the
+//! experiment of Musiolik et al. (2016b) (Section 5.2).
+
+use super::curves::{v_stick_chart, ThresholdCurve};
+use super::{
+    geomspace, h2o_with, material_line, par_map, Error, Progress, Resolution, GAMMAS_H2O, K,
+};
+use crate::table::Table;
+use contact::{Contact, Geometry, Material};
+use greenwood::CrackLaw;
+use numerics::format::number;
+use std::path::Path;
+use thresholds::paper::MUSIOLIK_2016B;
+use thresholds::{sweep_t_vis, SearchOptions};
+
+/// Figure 5: V_stick against T_vis for H2O, R1 = 90 um, several gamma_SV.
+#[derive(Debug, Clone)]
+pub struct Figure5 {
+    /// One curve per gamma_SV of [`GAMMAS_H2O`].
+    pub curves: Vec<ThresholdCurve>,
+}
+
+impl Figure5 {
+    /// Computes the figure.
+    pub fn compute(res: Resolution, progress: Progress) -> Result<Self, Error> {
+        let law = CrackLaw::new(K)?;
+        let t_vis = geomspace(1e-12, 1e-7, res.pick(41, 3));
+        // one sweep over T_vis per gamma_SV (each search seeded by its neighbour), in parallel
+        let curves = par_map("fig5", &GAMMAS_H2O, progress, |&g| {
+            let c = Contact::new(h2o_with(g), Geometry::identical(MUSIOLIK_2016B.radius))?;
+            Ok(ThresholdCurve {
+                parameter: g,
+                v_stick_jkr: c.v_stick_jkr(),
+                points: sweep_t_vis(&c, &law, &t_vis, &SearchOptions::default())?,
+            })
+        })?;
+        Ok(Self { curves })
+    }
+
+    /// `fig5.csv`.
+    pub fn to_tables(&self) -> Vec<Table> {
+        let mut t = Table::new(
+            "fig5.csv",
+            vec![
+                "Figure 5: V_stick against T_vis for H2O grains and several gamma_sv (Section 5.2)".into(),
+                material_line("h2o (gamma_sv varied)", &Material::h2o()),
+                format!(
+                    "radius = {} m, k = {}; experiment (Musiolik et al. 2016b): V_stick ~ {} m/s",
+                    number(MUSIOLIK_2016B.radius),
+                    number(K),
+                    number(MUSIOLIK_2016B.v_stick)
+                ),
+                "v_stick is empty where no collision bounces up to no_bouncing_below (the curve ends)".into(),
+                "units: gamma_sv [J/m^2], t_vis [s], v_stick, v_double_onset, v_stick_jkr, no_bouncing_below [m/s]".into(),
+            ],
+            &["gamma_sv", "t_vis", "v_stick", "v_double_onset", "v_stick_jkr", "no_bouncing_below"],
+        );
+        for c in &self.curves {
+            for th in &c.points {
+                t.push(vec![
+                    c.parameter.into(),
+                    th.t_vis.into(),
+                    th.v_stick.into(),
+                    th.v_double_onset.into(),
+                    th.v_stick_jkr.into(),
+                    th.no_bouncing_below().into(),
+                ]);
+            }
+        }
+        vec![t]
+    }
+}
+
+impl Figure5 {
+    /// `fig5.svg`: V_stick against T_vis for each gamma_SV, with the H2O experiment.
+    pub fn draw(&self, path: &Path) -> Result<(), Error> {
+        let curves: Vec<_> = self
+            .curves
+            .iter()
+            .map(|c| (format!("gamma_SV = {} J/m^2", number(c.parameter)), c))
+            .collect();
+        v_stick_chart(
+            path,
+            "Figure 5: H2O, R1 = 90 um (x: no bouncing beyond)",
+            &curves,
+            (1e-12, 1e-7),
+            None,
+            MUSIOLIK_2016B.v_stick,
+            &format!("experiment {} m/s", number(MUSIOLIK_2016B.v_stick)),
+        )
+    }
+}
