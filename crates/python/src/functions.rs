@@ -15,7 +15,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::collections::HashMap;
 use thresholds::{
-    Collider, Contact, CrackLaw, Geometry, GreenwoodError, OutOfRange, SearchOptions,
+    Collider, Contact, CrackLaw, FitWarning, Geometry, GreenwoodError, OutOfRange, SearchOptions,
     SolverOptions, StickingCriterion, TVisLaw, Warning,
 };
 
@@ -399,9 +399,17 @@ pub fn fit_t_vis<'py>(
         let law = laws.get(k[i], i)?;
         let fit = thresholds::fit_t_vis(&c, law, v[i], dv[i], &opts)
             .map_err(|e| Error::from_thresholds(e, i))?;
+        let mut w = warned(i, c.warnings());
+        w.extend(fit.warnings().iter().map(|f| {
+            let kind = match f {
+                FitWarning::AboveDefaultSearchLimit { .. } => "fit_v_max",
+                FitWarning::LowerEndAtJkr { .. } => "fit_jkr",
+            };
+            (i, kind, f.message_for("v_max="))
+        }));
         Ok((
             [fit.t_vis, fit.t_vis_min, fit.t_vis_max, fit.v_stick_jkr],
-            warned(i, c.warnings()),
+            w,
         ))
     })?;
     columns(

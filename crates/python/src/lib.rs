@@ -35,13 +35,25 @@ mod _core {
     #[pymodule_export]
     use crate::material::Material;
     #[pymodule_export]
-    use crate::sweep::{sweep, sweep_chunk_count};
+    use crate::sweep::sweep;
 
     use pyo3::prelude::*;
+
+    /// Elements (or sweep chunks) one call computes between two checks for Ctrl-C on all
+    /// cores: a batch that keeps every core busy, for progress reports between batches.
+    #[pyfunction]
+    fn parallel_batch() -> usize {
+        crate::parallel::batch()
+    }
 
     #[pymodule_init]
     fn init(m: &Bound<'_, PyModule>) -> PyResult<()> {
         m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+        // the defaults and the sweep's columns, stated once in the library
+        m.add("DEFAULT_RADIUS", thresholds::DEFAULT_RADIUS)?;
+        m.add("DEFAULT_K", thresholds::DEFAULT_K)?;
+        m.add("DEFAULT_REL_TOL", thresholds::DEFAULT_REL_TOL)?;
+        m.add("SWEEP_COLUMNS", thresholds::sweep::COLUMNS.to_vec())?;
         Ok(())
     }
 }

@@ -9,6 +9,11 @@ use rayon::prelude::*;
 /// fits, the slowest element (about 100 ms), while the pause costs microseconds.
 const ELEMENTS_PER_THREAD: usize = 4;
 
+/// Elements computed between two checks for Ctrl-C: [`ELEMENTS_PER_THREAD`] a thread.
+pub fn batch() -> usize {
+    (rayon::current_num_threads() * ELEMENTS_PER_THREAD).max(1)
+}
+
 /// `f(0), ..., f(n - 1)` on all cores with the GIL released, in chunks with a check for signals
 /// (Ctrl-C raises `KeyboardInterrupt`) after each; the first error in index order is returned.
 pub fn map<T, F>(py: Python<'_>, n: usize, f: F) -> PyResult<Vec<T>>
@@ -16,7 +21,7 @@ where
     T: Send,
     F: Fn(usize) -> Result<T, Error> + Sync + Send,
 {
-    let chunk = (rayon::current_num_threads() * ELEMENTS_PER_THREAD).max(1);
+    let chunk = batch();
     let mut out = Vec::with_capacity(n);
     let mut start = 0;
     while start < n {

@@ -8,12 +8,14 @@ use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use thresholds::sweep::{Grid, Laws, NamedMaterial, Partner, Row, TVisAxis};
+use thresholds::sweep::{
+    Cell, Grid, Laws, NamedMaterial, Partner, Row, TVisAxis, COLUMNS, WARNINGS_SEPARATOR,
+};
 use thresholds::{OutOfRange, SearchOptions, TVisLaw};
 
 /// Rows of the chunks `chunks` (all when None) of the grid, as columns: `index` (grid order),
-/// the inputs and the results of `thresholds::sweep::COLUMNS` (NaN where none; `radius2` NaN
-/// on a wall; `warnings` joined by "; ").
+/// then each of `thresholds::sweep::COLUMNS` (NaN where a number does not exist, `radius2` on
+/// a wall; `warnings` joined by "; "), and `n_chunks`, the grid's number of chunks.
 #[pyfunction]
 #[pyo3(signature = (materials, gamma_sv, radius, radius2, wall, t_vis, t_vis_law, k, v_max, rel_tol, chunks=None))]
 #[allow(clippy::too_many_arguments)]
@@ -93,58 +95,37 @@ pub fn sweep<'py>(
     })?;
     let rows: Vec<&Row> = computed.iter().flatten().collect();
     let dict = PyDict::new(py);
-    let f = |pick: &dyn Fn(&Row) -> f64| -> Vec<f64> { rows.iter().map(|r| pick(r)).collect() };
-    let nan = |v: Option<f64>| v.unwrap_or(f64::NAN);
+    dict.set_item("n_chunks", all.len())?;
     let index: Vec<i64> = rows.iter().map(|r| r.point.index as i64).collect();
     dict.set_item("index", PyArray1::from_vec(py, index))?;
-    let names: Vec<&str> = rows
-        .iter()
-        .map(|r| grid.materials[r.point.material].name.as_str())
-        .collect();
-    dict.set_item("material", names)?;
-    type Column<'a> = (&'a str, Box<dyn Fn(&Row) -> f64 + 'a>);
-    let columns: Vec<Column> = vec![
-        ("gamma_sv", Box::new(|r| r.point.constants.gamma_sv)),
-        ("young", Box::new(|r| r.point.constants.young)),
-        ("poisson", Box::new(|r| r.point.constants.poisson)),
-        ("density", Box::new(|r| r.point.constants.density)),
-        ("radius", Box::new(|r| r.point.geometry.r1())),
-        ("radius2", Box::new(move |r| nan(r.point.geometry.r2()))),
-    ];
-    for (name, pick) in &columns {
-        dict.set_item(*name, PyArray1::from_vec(py, f(pick.as_ref())))?;
+    let cells: Vec<[Cell; COLUMNS.len()]> = rows.iter().map(|r| r.cells(&grid)).collect();
+    for (j, name) in COLUMNS.iter().enumerate() {
+        let column = cells.iter().map(|c| &c[j]);
+        match cells.first().map(|c| &c[j]) {
+            Some(Cell::Number(_)) | None => {
+                let values: Vec<f64> = column
+                    .map(|c| match c {
+                        Cell::Number(v) => v.unwrap_or(f64::NAN),
+                        _ => f64::NAN,
+                    })
+                    .collect();
+                dict.set_item(*name, PyArray1::from_vec(py, values))?;
+            }
+            Some(Cell::Flag(_)) => {
+                let values: Vec<bool> = column.map(|c| matches!(c, Cell::Flag(true))).collect();
+                dict.set_item(*name, PyArray1::from_vec(py, values))?;
+            }
+            Some(Cell::Text(_) | Cell::List(_)) => {
+                let values: Vec<String> = column
+                    .map(|c| match c {
+                        Cell::Text(s) => s.clone(),
+                        Cell::List(l) => l.join(WARNINGS_SEPARATOR),
+                        _ => String::new(),
+                    })
+                    .collect();
+                dict.set_item(*name, values)?;
+            }
+        }
     }
-    let walls: Vec<bool> = rows.iter().map(|r| r.point.geometry.is_wall()).collect();
-    dict.set_item("wall", PyArray1::from_vec(py, walls))?;
-    let results: Vec<Column> = vec![
-        ("t_vis", Box::new(|r| r.point.t_vis)),
-        ("k", Box::new(|r| r.point.k)),
-        ("v_stick", Box::new(move |r| nan(r.v_stick))),
-        ("v_double_onset", Box::new(move |r| nan(r.v_double_onset))),
-        ("v_stick_jkr", Box::new(|r| r.v_stick_jkr)),
-        ("v_frag", Box::new(move |r| nan(r.v_frag))),
-        (
-            "no_bouncing_below",
-            Box::new(move |r| nan(r.no_bouncing_below)),
-        ),
-    ];
-    for (name, pick) in &results {
-        dict.set_item(*name, PyArray1::from_vec(py, f(pick.as_ref())))?;
-    }
-    let warnings: Vec<String> = rows.iter().map(|r| r.warnings.join("; ")).collect();
-    dict.set_item("warnings", warnings)?;
     Ok(dict)
-}
-
-/// The number of chunks of a grid of these axis lengths (one per combination of every axis
-/// but T_vis).
-#[pyfunction]
-pub fn sweep_chunk_count(
-    materials: usize,
-    gamma_sv: usize,
-    radius: usize,
-    radius2: usize,
-    k: usize,
-) -> usize {
-    materials * gamma_sv * radius * radius2 * k
 }

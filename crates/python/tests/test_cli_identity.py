@@ -1,8 +1,10 @@
-"""The Python package and the CLI give the same numbers, to the bit, for the same inputs."""
+"""The Python package and the CLI give the same numbers, to the bit, and the same warnings for the
+same inputs."""
 
 import json
 import math
 import subprocess
+import warnings
 
 import pytest
 
@@ -60,6 +62,21 @@ CASES = [
         ["t_vis", "t_vis_min", "t_vis_max", "v_stick_jkr"],
     ),
     (
+        ["fit-t-vis", "--v-stick", "0.03", "--v-stick-err", "0.02"],
+        lambda: st.fit_t_vis(CO2, v_stick=0.03, v_stick_err=0.02),
+        ["t_vis", "t_vis_min", "t_vis_max", "v_stick_jkr"],
+    ),
+    (
+        ["fit-t-vis", "--v-stick", "20"],
+        lambda: st.fit_t_vis(CO2, v_stick=20.0),
+        ["t_vis", "t_vis_min", "t_vis_max", "v_stick_jkr"],
+    ),
+    (
+        ["v-stick", "--radius", "5e-9", "--t-vis", "1e-12"],
+        lambda: st.v_stick(CO2, radius=5e-9, t_vis=1e-12),
+        ["v_stick", "v_double_onset", "v_stick_jkr", "no_bouncing_below"],
+    ),
+    (
         ["v-frag", "--material", "h2o", "--radius", "1e-7", "--t-vis-law", "h2o"],
         lambda: st.v_frag(H2O, radius=1e-7, t_vis_law="h2o"),
         ["v_frag", "v_stick", "t_vis", "v_frag_jkr", "v_stick_jkr", "no_bouncing_below"],
@@ -72,13 +89,25 @@ CASES = [
 ]
 
 
+# The one place where the two front ends word a warning differently: how they name the search
+# limit (the CLI's flag, Python's argument).
+CLI_TO_PYTHON = [("--v-max ", "v_max=")]
+
+
 @pytest.mark.parametrize("args,python,keys", CASES, ids=[" ".join(c[0]) for c in CASES])
 def test_python_equals_cli(cli, args, python, keys):
     j = cli_json(cli, *args)
-    r = python()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        r = python()
     for key in keys:
         value = r[key] if isinstance(r, dict) else getattr(r, key)
         assert same(j[key], value), f"{key}: CLI {j[key]!r} != Python {value!r}"
+    expected = list(j.get("warnings", []))
+    for cli_name, py_name in CLI_TO_PYTHON:
+        expected = [w.replace(cli_name, py_name) for w in expected]
+    got = [str(w.message) for w in caught if issubclass(w.category, st.StickinessWarning)]
+    assert sorted(got) == sorted(expected)
 
 
 def test_material_file_identity(cli, tmp_path):

@@ -5,7 +5,7 @@
 //! and found with the Illinois root finder of `numerics::roots`. A measured value at or below
 //! V_stick,JKR is reached by no T_vis > 0 ([`ThresholdsError::BelowJkr`]).
 
-use crate::stick::{sticking_thresholds, SearchOptions, V_SEARCH_LIMIT};
+use crate::stick::{sticking_thresholds, SearchOptions, DEFAULT_V_MAX_OVER_JKR, V_SEARCH_LIMIT};
 use crate::ThresholdsError;
 use contact::Contact;
 use greenwood::CrackLaw;
@@ -29,7 +29,7 @@ const V_MAX_OVER_TARGET: f64 = 2.0;
 /// Largest measured V_stick accepted (m/s): the searches must reach twice it.
 pub const V_STICK_FIT_MAX: f64 = V_SEARCH_LIMIT / V_MAX_OVER_TARGET;
 
-/// Fitted relaxation times (s).
+/// Fitted relaxation times (s), with the measurement they were fitted to.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TVisFit {
     /// T_vis reproducing the measured V_stick (s).
@@ -41,6 +41,108 @@ pub struct TVisFit {
     pub t_vis_max: f64,
     /// V_stick,JKR of the contact (m/s).
     pub v_stick_jkr: f64,
+    /// The measured V_stick (m/s).
+    pub v_stick: f64,
+    /// Its uncertainty dV (m/s).
+    pub v_stick_err: f64,
+    /// The search limit given for the fit ([`SearchOptions::v_max`], m/s), if any.
+    pub v_max: Option<f64>,
+}
+
+/// A fit that is valid but should be read with care.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum FitWarning {
+    /// V_stick + dV lies above the default search limit of [`sticking_thresholds`]
+    /// (1000 V_stick,JKR, at most 1e4 m/s): a search from the fitted T_vis finds it again only
+    /// with `v_max` raised.
+    AboveDefaultSearchLimit {
+        /// V_stick + dV (m/s).
+        v_stick: f64,
+        /// The default search limit (m/s).
+        limit: f64,
+        /// A `v_max` (m/s) that finds it: twice it, at most 1e4 m/s.
+        v_max: f64,
+    },
+    /// V_stick - dV is at or below V_stick,JKR, which every T_vis > 0 exceeds: `t_vis_min = 0`,
+    /// the JKR limit.
+    LowerEndAtJkr {
+        /// V_stick - dV (m/s).
+        low: f64,
+        /// V_stick,JKR (m/s).
+        v_stick_jkr: f64,
+    },
+}
+
+impl FitWarning {
+    /// The message, naming the search limit `v_max_as` as the caller spells it with its
+    /// separator (`"--v-max "` in the CLI, `"v_max="` in Python).
+    ///
+    /// ```
+    /// use thresholds::FitWarning;
+    /// let w = FitWarning::AboveDefaultSearchLimit { v_stick: 20.0, limit: 16.6, v_max: 40.0 };
+    /// assert!(w.message_for("--v-max ").ends_with("pass --v-max 40.0 to find it from the fitted T_vis"));
+    /// ```
+    pub fn message_for(&self, v_max_as: &str) -> String {
+        match self {
+            FitWarning::AboveDefaultSearchLimit {
+                v_stick,
+                limit,
+                v_max,
+            } => format!(
+                "V_stick = {} m/s is above the default search limit of V_stick and V_frag searches (1000 V_stick,JKR = {} m/s): pass {v_max_as}{} to find it from the fitted T_vis",
+                number(*v_stick),
+                number(*limit),
+                number(*v_max)
+            ),
+            FitWarning::LowerEndAtJkr { low, v_stick_jkr } => format!(
+                "V_stick - dV = {} m/s is at or below V_stick,JKR = {} m/s: t_vis_min = 0 (the JKR limit; no T_vis > 0 gives a V_stick that low)",
+                number(*low),
+                number(*v_stick_jkr)
+            ),
+        }
+    }
+}
+
+impl std::fmt::Display for FitWarning {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message_for("v_max = "))
+    }
+}
+
+impl TVisFit {
+    /// The warnings of this fit ([`FitWarning`]): a V_stick + dV beyond the default search limit
+    /// when no `v_max` was given, and a V_stick - dV at or below V_stick,JKR.
+    ///
+    /// # Example
+    /// ```
+    /// use thresholds::{fit_t_vis, Contact, CrackLaw, FitWarning, Geometry, Material, SearchOptions};
+    /// // 0.01 m/s is below V_stick,JKR = 0.0166 m/s of 60 um CO2 grains: t_vis_min = 0
+    /// let c = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+    /// let fit = fit_t_vis(&c, &CrackLaw::new(0.01)?, 0.03, 0.02, &SearchOptions::default())?;
+    /// assert_eq!(fit.t_vis_min, 0.0);
+    /// assert!(matches!(fit.warnings()[..], [FitWarning::LowerEndAtJkr { .. }]));
+    /// # Ok::<(), thresholds::ThresholdsError>(())
+    /// ```
+    pub fn warnings(&self) -> Vec<FitWarning> {
+        let mut out = Vec::new();
+        let top = self.v_stick + self.v_stick_err;
+        let limit = (DEFAULT_V_MAX_OVER_JKR * self.v_stick_jkr).min(V_SEARCH_LIMIT);
+        if self.v_max.is_none() && top > limit {
+            out.push(FitWarning::AboveDefaultSearchLimit {
+                v_stick: top,
+                limit,
+                v_max: (V_MAX_OVER_TARGET * top).min(V_SEARCH_LIMIT),
+            });
+        }
+        let low = self.v_stick - self.v_stick_err;
+        if self.v_stick_err > 0.0 && low <= self.v_stick_jkr {
+            out.push(FitWarning::LowerEndAtJkr {
+                low,
+                v_stick_jkr: self.v_stick_jkr,
+            });
+        }
+        out
+    }
 }
 
 fn check_v_stick(v: f64) -> Result<(), OutOfRange> {
@@ -179,5 +281,8 @@ pub fn fit_t_vis(
         t_vis_min,
         t_vis_max,
         v_stick_jkr: contact.v_stick_jkr(),
+        v_stick,
+        v_stick_err,
+        v_max: opts.v_max,
     })
 }

@@ -59,7 +59,7 @@ pub use dynamics::{
     TrajectoryPoint,
 };
 pub use error::ThresholdsError;
-pub use fit::{fit_t_vis, t_vis_for_v_stick, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
+pub use fit::{fit_t_vis, t_vis_for_v_stick, FitWarning, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
 pub use greenwood::{CrackLaw, GreenwoodError};
 pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
 pub use numerics::OutOfRange;

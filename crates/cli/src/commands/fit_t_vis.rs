@@ -45,25 +45,7 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
         number(args.k.k)
     ));
     r.warn(setup.contact.warnings());
-    // feeding t_vis_max back into v-stick must find V_stick + dV again
-    let top = args.v_stick + args.v_stick_err;
-    let default_limit = opts.v_max_for(fit.v_stick_jkr);
-    if args.search.v_max.is_none() && top > default_limit {
-        r.warn([format!(
-            "V_stick = {} m/s is above the default search limit of v-stick and v-frag (1000 V_stick,JKR = {} m/s): pass --v-max {} to them to find it from the fitted T_vis",
-            number(top),
-            number(default_limit),
-            number((2.0 * top).min(thresholds::V_SEARCH_LIMIT))
-        )]);
-    }
-    let low = args.v_stick - args.v_stick_err;
-    if args.v_stick_err > 0.0 && low <= fit.v_stick_jkr {
-        r.warn([format!(
-            "V_stick - dV = {} m/s is at or below V_stick,JKR = {} m/s: t_vis_min = 0 (the JKR limit; no T_vis > 0 gives a V_stick that low)",
-            number(low),
-            number(fit.v_stick_jkr)
-        )]);
-    }
+    r.warn(fit.warnings().iter().map(|w| w.message_for("--v-max ")));
     r.number("t_vis", fit.t_vis, "s")?;
     r.number("t_vis_min", fit.t_vis_min, "s")?;
     r.number("t_vis_max", fit.t_vis_max, "s")?;

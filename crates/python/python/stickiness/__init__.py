@@ -66,12 +66,12 @@ ArrayLike = Union[float, int, Sequence[float], np.ndarray]
 #: A Python float for scalar inputs, an ndarray of the broadcast shape for array inputs.
 FloatOrArray = Union[float, np.ndarray]
 
-#: Default radius R1 (m): the CO2 grains of Musiolik et al. (2016a), as the CLI's default.
-DEFAULT_RADIUS = 60e-6
+#: Default radius R1 (m): the typical CO2 grain of Musiolik et al. (2016a), as the CLI's default.
+DEFAULT_RADIUS: float = _core.DEFAULT_RADIUS
 #: Default modulus ratio k (dimensionless): the paper's fiducial value (Section 2.3).
-DEFAULT_K = 0.01
+DEFAULT_K: float = _core.DEFAULT_K
 #: Default relative tolerance of the threshold searches, as the CLI's.
-DEFAULT_REL_TOL = 1e-6
+DEFAULT_REL_TOL: float = _core.DEFAULT_REL_TOL
 
 
 class StickinessWarning(UserWarning):

@@ -13,7 +13,11 @@ import numpy as np
 import numpy.typing as npt
 
 __all__ = [
+    "DEFAULT_K",
+    "DEFAULT_RADIUS",
+    "DEFAULT_REL_TOL",
     "Material",
+    "SWEEP_COLUMNS",
     "SolverError",
     "_InputError",
     "__version__",
@@ -21,13 +25,21 @@ __all__ = [
     "crack_speed",
     "fit_t_vis",
     "jkr",
+    "parallel_batch",
     "sweep",
-    "sweep_chunk_count",
     "t_vis_law",
     "v_frag",
     "v_stick",
 ]
 __version__: str
+#: Default radius R1 (m): the typical CO2 grain of Musiolik et al. (2016a).
+DEFAULT_RADIUS: float
+#: Default modulus ratio k (dimensionless): the paper's fiducial value.
+DEFAULT_K: float
+#: Default relative width of the threshold brackets (dimensionless).
+DEFAULT_REL_TOL: float
+#: The columns of a sweep's rows, as the CLI's CSV header.
+SWEEP_COLUMNS: List[str]
 
 _F = npt.NDArray[np.float64]
 _Warnings = List[Tuple[int, str, str]]
@@ -129,4 +141,5 @@ def sweep(
     rel_tol: float,
     chunks: Optional[List[int]] = None,
 ) -> Dict[str, Any]: ...
-def sweep_chunk_count(materials: int, gamma_sv: int, radius: int, radius2: int, k: int) -> int: ...
+
+def parallel_batch() -> int: ...

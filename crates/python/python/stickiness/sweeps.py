@@ -22,28 +22,10 @@ import numpy as np
 from . import _core
 from ._core import Material
 
-#: The DataFrame's columns, as the CLI's CSV header.
-COLUMNS = (
-    "material",
-    "gamma_sv",
-    "young",
-    "poisson",
-    "density",
-    "radius",
-    "radius2",
-    "wall",
-    "t_vis",
-    "k",
-    "v_stick",
-    "v_double_onset",
-    "v_stick_jkr",
-    "v_frag",
-    "no_bouncing_below",
-    "warnings",
-)
+#: The DataFrame's columns, as the CLI's CSV header (stated once, in the Rust library).
+COLUMNS: Tuple[str, ...] = tuple(_core.SWEEP_COLUMNS)
 
-#: Chunks computed between two progress updates (and Ctrl-C checks) in process: 4 a core.
-_CHUNKS_PER_UPDATE = 8
+
 
 
 def _axis(name: str, values: Any) -> Tuple[float, ...]:
@@ -94,15 +76,7 @@ class SweepSpec:
     @property
     def n_chunks(self) -> int:
         """Chunks of the grid: one per combination of every axis but T_vis."""
-        return int(
-            _core.sweep_chunk_count(
-                len(self.materials),
-                len(self.gamma_sv) if self.gamma_sv else 1,
-                len(self.radius),
-                len(self.radius2) if self.radius2 else 1,
-                len(self.k),
-            )
-        )
+        return int(self.compute([])["n_chunks"])
 
     def compute(self, chunks: Optional[Sequence[int]] = None) -> Dict[str, Any]:
         """The rows of ``chunks`` (all by default) as columns, with their ``index`` in grid order."""
@@ -150,17 +124,17 @@ def _batches(n: int, size: int) -> List[List[int]]:
 
 def sweep(
     material: Union[str, Material, Sequence[Union[str, Material]]] = "co2",
-    radius: Any = 60e-6,
+    radius: Any = _core.DEFAULT_RADIUS,
     t_vis: Any = None,
     gamma_sv: Any = None,
-    k: Any = 0.01,
+    k: Any = _core.DEFAULT_K,
     t_vis_law: Optional[str] = None,
     radius2: Any = None,
     wall: bool = False,
     client: Any = None,
     progress: bool = False,
     v_max: Optional[float] = None,
-    rel_tol: float = 1e-6,
+    rel_tol: float = _core.DEFAULT_REL_TOL,
     chunks_per_task: int = 1,
 ) -> Any:
     """V_stick, V_double_onset, V_stick,JKR and V_frag = 10 V_stick over a grid (SI).
@@ -205,7 +179,7 @@ def sweep(
     if client is None:
         parts = []
         done = 0
-        for group in _batches(len(batches), _CHUNKS_PER_UPDATE):
+        for group in _batches(len(batches), _core.parallel_batch()):
             chunks = [c for b in group for c in batches[b]]
             parts.append(spec.compute(chunks))
             done += len(chunks)

@@ -25,4 +25,7 @@ pub mod row;
 pub use axis::{canonical, geomspace, parse_axis, AxisError};
 pub use grid::{Chunk, Grid, Laws, NamedMaterial, Partner, Point, TVisAxis};
 pub use resume::{remaining, written_rows, Remaining, Written};
-pub use row::{header_lines, header_text, hint_of, row_text, Format, Row, COLUMNS, UNITS};
+pub use row::{
+    header_lines, header_text, hint_of, row_text, Cell, Format, Row, COLUMNS, UNITS,
+    WARNINGS_SEPARATOR,
+};

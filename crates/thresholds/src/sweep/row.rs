@@ -121,54 +121,82 @@ fn csv_line(fields: &[String]) -> String {
     String::from_utf8(bytes).unwrap_or_default()
 }
 
+/// One cell of a row: the value of one of [`COLUMNS`].
+#[derive(Debug, Clone, PartialEq)]
+pub enum Cell {
+    /// A name (the material).
+    Text(String),
+    /// A number (SI); `None` where the value does not exist.
+    Number(Option<f64>),
+    /// A flag (the wall).
+    Flag(bool),
+    /// A list of messages (the warnings).
+    List(Vec<String>),
+}
+
+impl Row {
+    /// The row's cells, in the order of [`COLUMNS`] (its material named as in `grid`): the one
+    /// place that maps a row to its columns, for the CSV and JSON Lines forms and the Python
+    /// DataFrame alike.
+    pub fn cells(&self, grid: &Grid) -> [Cell; COLUMNS.len()] {
+        let p = &self.point;
+        let m = &p.constants;
+        let n = |v: f64| Cell::Number(Some(v));
+        [
+            Cell::Text(grid.materials[p.material].name.clone()),
+            n(m.gamma_sv),
+            n(m.young),
+            n(m.poisson),
+            n(m.density),
+            n(p.geometry.r1()),
+            Cell::Number(p.geometry.r2()),
+            Cell::Flag(p.geometry.is_wall()),
+            n(p.t_vis),
+            n(p.k),
+            Cell::Number(self.v_stick),
+            Cell::Number(self.v_double_onset),
+            n(self.v_stick_jkr),
+            Cell::Number(self.v_frag),
+            Cell::Number(self.no_bouncing_below),
+            Cell::List(self.warnings.clone()),
+        ]
+    }
+}
+
+/// The separator of the warnings of one row in a CSV field (and a Python DataFrame).
+pub const WARNINGS_SEPARATOR: &str = "; ";
+
 /// One row of `grid` as a line of the file (with its line break).
 pub fn row_text(format: Format, grid: &Grid, row: &Row) -> String {
-    let p = &row.point;
-    let m = &p.constants;
-    let name = &grid.materials[p.material].name;
-    let radius2 = p.geometry.r2();
+    let cells = row.cells(grid);
     match format {
         Format::Csv => {
-            let opt = |v: Option<f64>| v.map_or(String::new(), number);
-            csv_line(&[
-                name.clone(),
-                number(m.gamma_sv),
-                number(m.young),
-                number(m.poisson),
-                number(m.density),
-                number(p.geometry.r1()),
-                opt(radius2),
-                p.geometry.is_wall().to_string(),
-                number(p.t_vis),
-                number(p.k),
-                opt(row.v_stick),
-                opt(row.v_double_onset),
-                number(row.v_stick_jkr),
-                opt(row.v_frag),
-                opt(row.no_bouncing_below),
-                row.warnings.join("; "),
-            ])
+            let fields: Vec<String> = cells
+                .iter()
+                .map(|c| match c {
+                    Cell::Text(s) => s.clone(),
+                    Cell::Number(v) => v.map_or(String::new(), number),
+                    Cell::Flag(b) => b.to_string(),
+                    Cell::List(l) => l.join(WARNINGS_SEPARATOR),
+                })
+                .collect();
+            csv_line(&fields)
         }
         Format::Jsonl => {
-            let value = serde_json::json!({
-                "material": name,
-                "gamma_sv": m.gamma_sv,
-                "young": m.young,
-                "poisson": m.poisson,
-                "density": m.density,
-                "radius": p.geometry.r1(),
-                "radius2": radius2,
-                "wall": p.geometry.is_wall(),
-                "t_vis": p.t_vis,
-                "k": p.k,
-                "v_stick": row.v_stick,
-                "v_double_onset": row.v_double_onset,
-                "v_stick_jkr": row.v_stick_jkr,
-                "v_frag": row.v_frag,
-                "no_bouncing_below": row.no_bouncing_below,
-                "warnings": row.warnings,
-            });
-            format!("{value}\n")
+            let object: serde_json::Map<String, serde_json::Value> = COLUMNS
+                .iter()
+                .zip(cells)
+                .map(|(name, c)| {
+                    let value = match c {
+                        Cell::Text(s) => s.into(),
+                        Cell::Number(v) => v.into(),
+                        Cell::Flag(b) => b.into(),
+                        Cell::List(l) => l.into(),
+                    };
+                    (name.to_string(), value)
+                })
+                .collect();
+            format!("{}\n", serde_json::Value::Object(object))
         }
     }
 }
