@@ -27,6 +27,13 @@ pub struct Overrides {
     /// Override the surface free energy gamma_SV (J/m^2); the work of adhesion is 2 gamma_SV.
     #[arg(long, allow_hyphen_values = true)]
     pub gamma_sv: Option<f64>,
+    #[command(flatten)]
+    pub bulk: BulkOverrides,
+}
+
+/// Overrides of the three bulk constants (SI); `sweep` takes gamma_SV as an axis instead.
+#[derive(Debug, Clone, Args)]
+pub struct BulkOverrides {
     /// Override Young's modulus E (Pa).
     #[arg(long, allow_hyphen_values = true)]
     pub young: Option<f64>,
@@ -36,6 +43,20 @@ pub struct Overrides {
     /// Override the density rho (kg/m^3).
     #[arg(long, allow_hyphen_values = true)]
     pub density: Option<f64>,
+}
+
+impl BulkOverrides {
+    /// `(flag, value)` of each override given, as the command line spells it.
+    pub fn given(&self) -> Vec<(&'static str, f64)> {
+        [
+            ("--young", self.young),
+            ("--poisson", self.poisson),
+            ("--density", self.density),
+        ]
+        .into_iter()
+        .filter_map(|(flag, v)| Some((flag, v?)))
+        .collect()
+    }
 }
 
 /// A material after overrides, with the name it goes by in titles and in `"input"`.
@@ -53,9 +74,9 @@ impl Overrides {
     fn flags(&self) -> [(&'static str, Option<f64>); 4] {
         [
             ("gamma_sv", self.gamma_sv),
-            ("young", self.young),
-            ("poisson", self.poisson),
-            ("density", self.density),
+            ("young", self.bulk.young),
+            ("poisson", self.bulk.poisson),
+            ("density", self.bulk.density),
         ]
     }
 
@@ -269,6 +290,33 @@ impl TVisArgs {
         }
         setup.with_input("t_vis", t_vis);
         Ok(t_vis)
+    }
+}
+
+/// The contact, its relaxation time and its crack law: the inputs of one collision or of one
+/// threshold search (`collide`, `v-stick`, `v-frag`).
+#[derive(Debug, Clone, Args)]
+pub struct PointArgs {
+    #[command(flatten)]
+    pub material: MaterialArgs,
+    #[command(flatten)]
+    pub geometry: GeometryArgs,
+    #[command(flatten)]
+    pub t_vis: TVisArgs,
+    #[command(flatten)]
+    pub k: KArgs,
+}
+
+impl PointArgs {
+    /// The contact (with its inputs), T_vis (s; `default_t_vis` when no flag gives it, `None`:
+    /// one is required) and the crack law of k.
+    pub fn resolve(
+        &self,
+        default_t_vis: Option<f64>,
+    ) -> Result<(Setup, f64, greenwood::CrackLaw), CliError> {
+        let mut setup = Setup::new(&self.material, &self.geometry)?;
+        let t_vis = self.t_vis.resolve(&mut setup, default_t_vis)?;
+        Ok((setup, t_vis, self.k.crack_law()?))
     }
 }
 

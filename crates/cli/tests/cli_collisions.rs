@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{json, run};
+use common::{assert_bad_input, json, json_of, run_line, TempDir};
 use std::process::Command;
 
 /// Section 4: 3.5, 4.05 and 4.5 cm/s stick, double-collide and bounce (CO2, 60 um, 1e-9 s).
@@ -36,8 +36,7 @@ fn collide_outcomes_and_keys() {
 
 #[test]
 fn collide_writes_a_trajectory_csv() {
-    let dir = std::env::temp_dir().join(format!("stickiness-test-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("test");
     let path = dir.join("traj.csv");
     let p = path.to_str().unwrap();
     json(&[
@@ -60,22 +59,12 @@ fn collide_writes_a_trajectory_csv() {
     assert_eq!(rows[0][2], 0.0); // delta = 0 at first contact (Section 2.6)
     assert_eq!(rows[0][3], 0.045); // delta_dot = V_in
     assert!((rows[0][5] / 0.0101 - 1.0).abs() < 1e-9); // beta = (1 + eps) k
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// Section 4.4: V_stick = 4.14 cm/s (first bouncing V_in on the paper's 0.01 cm/s grid).
 #[test]
 fn v_stick_keys() {
-    let j = json(&[
-        "v-stick",
-        "--material",
-        "co2",
-        "--radius",
-        "60e-6",
-        "--t-vis",
-        "1e-9",
-        "--json",
-    ]);
+    let j = json_of("v-stick --material co2 --radius 60e-6 --t-vis 1e-9 --json");
     let vs = j["v_stick"].as_f64().unwrap();
     assert!(vs > 0.0413 && vs <= 0.0414);
     assert!(j["v_double_onset"].as_f64().unwrap() < vs);
@@ -84,7 +73,7 @@ fn v_stick_keys() {
 
 #[test]
 fn v_stick_without_bouncing_says_so() {
-    let j = json(&["v-stick", "--t-vis", "1e-6", "--v-max", "2", "--json"]);
+    let j = json_of("v-stick --t-vis 1e-6 --v-max 2 --json");
     assert!(j["v_stick"].is_null());
     assert_eq!(j["no_bouncing_below"].as_f64(), Some(2.0));
 }
@@ -92,18 +81,8 @@ fn v_stick_without_bouncing_says_so() {
 /// Section 5.1: 0.04 ± 0.02 m/s gives 8.5e-11 <= T_vis <= 1.97e-9 s.
 #[test]
 fn fit_t_vis_keys() {
-    let j = json(&[
-        "fit-t-vis",
-        "--material",
-        "co2",
-        "--radius",
-        "60e-6",
-        "--v-stick",
-        "0.04",
-        "--v-stick-err",
-        "0.02",
-        "--json",
-    ]);
+    let j =
+        json_of("fit-t-vis --material co2 --radius 60e-6 --v-stick 0.04 --v-stick-err 0.02 --json");
     let (lo, hi) = (
         j["t_vis_min"].as_f64().unwrap(),
         j["t_vis_max"].as_f64().unwrap(),
@@ -119,19 +98,10 @@ fn fit_t_vis_keys() {
 /// Section 7.1: V_frag,JKR(30 um) = 0.296 m/s; Section 5.3 laws give T_vis.
 #[test]
 fn v_frag_keys() {
-    let j = json(&["v-frag", "--material", "co2", "--radius", "30e-6", "--json"]);
+    let j = json_of("v-frag --material co2 --radius 30e-6 --json");
     assert!((j["v_frag"].as_f64().unwrap() / 0.296 - 1.0).abs() < 0.002);
     assert_eq!(j["t_vis"].as_f64(), Some(0.0));
-    let j = json(&[
-        "v-frag",
-        "--material",
-        "h2o",
-        "--radius",
-        "90e-6",
-        "--t-vis-law",
-        "h2o",
-        "--json",
-    ]);
+    let j = json_of("v-frag --material h2o --radius 90e-6 --t-vis-law h2o --json");
     assert!((j["t_vis"].as_f64().unwrap() / 9.4e-9 - 1.0).abs() < 0.005);
     let (vf, vs) = (
         j["v_frag"].as_f64().unwrap(),
@@ -142,32 +112,18 @@ fn v_frag_keys() {
 
 #[test]
 fn bad_collision_input() {
-    for (args, flag) in [
-        (vec!["collide", "--t-vis", "1e-9", "--v-in", "-1"], "--v-in"),
+    assert_bad_input(&[
+        ("collide --t-vis 1e-9 --v-in -1", "--v-in"),
+        ("collide --t-vis -1e-9 --v-in 1", "--t-vis"),
+        ("collide --t-vis 1e-9 --v-in 1 --k 0", "--k"),
+        ("v-stick --t-vis -1", "--t-vis"),
+        ("fit-t-vis --v-stick 0", "--v-stick"),
         (
-            vec!["collide", "--t-vis", "-1e-9", "--v-in", "1"],
-            "--t-vis",
-        ),
-        (
-            vec!["collide", "--t-vis", "1e-9", "--v-in", "1", "--k", "0"],
-            "--k",
-        ),
-        (vec!["v-stick", "--t-vis", "-1"], "--t-vis"),
-        (vec!["fit-t-vis", "--v-stick", "0"], "--v-stick"),
-        (
-            vec!["fit-t-vis", "--v-stick", "0.04", "--v-stick-err", "0.05"],
+            "fit-t-vis --v-stick 0.04 --v-stick-err 0.05",
             "--v-stick-err",
         ),
-    ] {
-        let (code, out, err) = run(&args);
-        assert_eq!(code, 2, "{args:?}: {err}");
-        assert!(out.is_empty());
-        assert!(
-            err.contains(flag) && err.contains(": must be"),
-            "{args:?}: {err}"
-        );
-    }
-    let (code, _, err) = run(&["collide", "--t-vis", "0", "--v-in", "1"]);
+    ]);
+    let (code, _, err) = run_line("collide --t-vis 0 --v-in 1");
     assert_eq!(code, 2);
     assert!(err.contains("JKR"), "{err}");
 }
@@ -187,6 +143,6 @@ fn tabor_warning_for_small_grains() {
     assert_eq!(w.len(), 1);
     assert!(w[0].as_str().unwrap().contains("Tabor"));
     assert!(String::from_utf8_lossy(&out.stderr).contains("warning: Tabor"));
-    let j = json(&["jkr", "--json"]);
+    let j = json_of("jkr --json");
     assert_eq!(j["warnings"].as_array().map(Vec::len), Some(0));
 }

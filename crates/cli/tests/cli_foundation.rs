@@ -4,12 +4,12 @@
 
 mod common;
 
-use common::{json, run};
+use common::{assert_bad_input, json, json_of, run, run_line, TempDir};
 
 /// Defaults are the paper's CO2 case (R1 = 60 um): V_stick,JKR = 1.66e-2 m/s (Section 5.1).
 #[test]
 fn jkr_defaults_and_keys() {
-    let v = json(&["jkr", "--json"]);
+    let v = json_of("jkr --json");
     for key in [
         "a_eq",
         "delta_eq",
@@ -31,8 +31,8 @@ fn jkr_defaults_and_keys() {
 /// Sections 2.6 and 5.4 give two CO2 densities: --density 1650 scales V_stick,JKR by sqrt(1560/1650).
 #[test]
 fn density_override_scales_v_stick_jkr() {
-    let a = json(&["jkr", "--json"])["v_stick_jkr"].as_f64().unwrap();
-    let b = json(&["jkr", "--density", "1650", "--json"])["v_stick_jkr"]
+    let a = json_of("jkr --json")["v_stick_jkr"].as_f64().unwrap();
+    let b = json_of("jkr --density 1650 --json")["v_stick_jkr"]
         .as_f64()
         .unwrap();
     assert!((b / a - (1560.0f64 / 1650.0).sqrt()).abs() < 1e-12);
@@ -41,37 +41,29 @@ fn density_override_scales_v_stick_jkr() {
 /// Appendix A / Figure 1: v(k, 1) = 0 and sign(v) = sign(1 - beta).
 #[test]
 fn crack_law_keys_and_signs() {
-    let v = json(&["crack-law", "--k", "0.01", "--beta", "2", "--json"]);
+    let v = json_of("crack-law --k 0.01 --beta 2 --json");
     for key in ["k", "beta", "alpha", "v"] {
         assert!(v.get(key).is_some(), "missing {key}");
     }
     assert!(v["v"].as_f64().unwrap() < 0.0);
-    let v = json(&["crack-law", "--beta", "0.5", "--json"]);
+    let v = json_of("crack-law --beta 0.5 --json");
     assert!(v["v"].as_f64().unwrap() > 0.0);
-    let v = json(&["crack-law", "--beta", "1", "--json"]);
+    let v = json_of("crack-law --beta 1 --json");
     assert_eq!(v["v"].as_f64().unwrap(), 0.0);
 }
 
 #[test]
 fn bad_input_names_the_flag_and_range() {
-    for (args, flag) in [
-        (vec!["jkr", "--radius", "-1"], "--radius"),
-        (vec!["jkr", "--radius", "0"], "--radius"),
-        (vec!["jkr", "--poisson", "0.5"], "--poisson"),
-        (vec!["jkr", "--poisson", "-1"], "--poisson"),
-        (vec!["jkr", "--young", "nan"], "--young"),
-        (vec!["crack-law", "--k", "1", "--beta", "0.5"], "--k"),
-        (vec!["crack-law", "--k", "0.01", "--beta", "200"], "--beta"),
-    ] {
-        let (code, out, err) = run(&args);
-        assert_eq!(code, 2, "{args:?}: {err}");
-        assert!(out.is_empty());
-        assert!(
-            err.contains(flag) && err.contains(": must be"),
-            "{args:?}: {err}"
-        );
-    }
-    let (code, _, err) = run(&["jkr", "--material", "co3"]);
+    assert_bad_input(&[
+        ("jkr --radius -1", "--radius"),
+        ("jkr --radius 0", "--radius"),
+        ("jkr --poisson 0.5", "--poisson"),
+        ("jkr --poisson -1", "--poisson"),
+        ("jkr --young nan", "--young"),
+        ("crack-law --k 1 --beta 0.5", "--k"),
+        ("crack-law --k 0.01 --beta 200", "--beta"),
+    ]);
+    let (code, _, err) = run_line("jkr --material co3");
     assert_eq!(code, 2);
     assert!(err.contains("co2, h2o") && err.contains("JSON"), "{err}");
 }
@@ -80,8 +72,7 @@ fn bad_input_names_the_flag_and_range() {
 /// a missing or unknown field is named.
 #[test]
 fn material_from_json_file() {
-    let dir = std::env::temp_dir().join(format!("stickiness-material-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("material");
     let good = dir.join("ice.json");
     std::fs::write(
         &good,
@@ -96,7 +87,7 @@ fn material_from_json_file() {
         "90e-6",
         "--json",
     ]);
-    let mut preset = json(&["jkr", "--material", "h2o", "--radius", "90e-6", "--json"]);
+    let mut preset = json_of("jkr --material h2o --radius 90e-6 --json");
     // the same numbers; only the material's name differs in the inputs
     preset["input"]["material"] = from_file["input"]["material"].clone();
     assert_eq!(from_file, preset);
@@ -113,5 +104,4 @@ fn material_from_json_file() {
     let (code, _, err) = run(&["jkr", "--material", bad.to_str().unwrap()]);
     assert_eq!(code, 2);
     assert!(err.contains("color"), "{err}");
-    std::fs::remove_dir_all(&dir).unwrap();
 }

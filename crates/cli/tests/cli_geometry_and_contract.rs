@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{json, run};
+use common::{json, json_of, run, run_line, TempDir};
 use serde_json::Value;
 
 fn f(v: &Value) -> f64 {
@@ -17,23 +17,23 @@ fn f(v: &Value) -> f64 {
 /// the geometry.
 #[test]
 fn geometry_flags() {
-    let id = json(&["jkr", "--json"]);
-    let same = json(&["jkr", "--radius2", "0.00006", "--json"]);
+    let id = json_of("jkr --json");
+    let same = json_of("jkr --radius2 0.00006 --json");
     assert_eq!(id, same);
-    let wall = json(&["jkr", "--wall", "--json"]);
+    let wall = json_of("jkr --wall --json");
     let ratio = f(&wall["v_stick_jkr"]) / f(&id["v_stick_jkr"]);
     assert!((ratio - 2f64.powf(1.0 / 6.0)).abs() < 1e-12);
     assert_eq!(wall["input"]["radius2"], Value::Null);
     assert_eq!(wall["input"]["wall"], Value::Bool(true));
     assert_eq!(id["input"]["radius2"].as_f64(), Some(60e-6));
-    let (_, text, _) = run(&["jkr", "--radius", "60e-6", "--radius2", "30e-6"]);
+    let (_, text, _) = run_line("jkr --radius 60e-6 --radius2 30e-6");
     assert!(text.contains("two spheres of 60 um and 30 um"), "{text}");
-    let (_, text, _) = run(&["v-stick", "--wall", "--t-vis", "1e-12"]);
+    let (_, text, _) = run_line("v-stick --wall --t-vis 1e-12");
     assert!(text.contains("a 60 um sphere on a wall"), "{text}");
-    let (code, _, err) = run(&["v-stick", "--wall", "--radius2", "1e-5", "--t-vis", "1e-9"]);
+    let (code, _, err) = run_line("v-stick --wall --radius2 1e-5 --t-vis 1e-9");
     assert_eq!(code, 2);
     assert!(err.contains("--wall") && err.contains("--radius2"), "{err}");
-    let (code, _, err) = run(&["jkr", "--radius2", "-3"]);
+    let (code, _, err) = run_line("jkr --radius2 -3");
     assert_eq!(code, 2);
     assert!(err.contains("--radius2 = -3.0: must be > 0"), "{err}");
 }
@@ -82,7 +82,7 @@ fn t_vis_law_everywhere() {
     let (code, _, err) = run(&["v-stick"]);
     assert_eq!(code, 2);
     assert!(err.contains("--t-vis"), "{err}");
-    let (code, _, _) = run(&["v-stick", "--t-vis", "1e-9", "--t-vis-law", "co2"]);
+    let (code, _, _) = run_line("v-stick --t-vis 1e-9 --t-vis-law co2");
     assert_eq!(code, 2);
 }
 
@@ -90,11 +90,11 @@ fn t_vis_law_everywhere() {
 /// (Section 3.2: E = 10.7 GPa, nu = 0.26).
 #[test]
 fn material_command() {
-    let j = json(&["material", "CO2", "--json"]);
+    let j = json_of("material CO2 --json");
     assert!((f(&j["young"]) / 1e9 - 10.708).abs() < 0.001);
     assert!((f(&j["poisson"]) - 0.26066).abs() < 1e-5);
     assert_eq!(f(&j["gamma_sv"]), 0.08);
-    let j = json(&["material", "h2o", "--density", "917", "--json"]);
+    let j = json_of("material h2o --density 917 --json");
     assert_eq!(f(&j["density"]), 917.0);
     for key in ["gamma_sv", "young", "poisson", "density"] {
         assert!(j[key].is_number(), "{key}");
@@ -140,7 +140,7 @@ fn every_json_has_its_inputs() {
 /// V_stick,JKR (1.66e-2 m/s for CO2, 60 um) is bad input that gives V_stick,JKR.
 #[test]
 fn fit_below_jkr_is_refused() {
-    let (code, out, err) = run(&["fit-t-vis", "--v-stick", "0.016"]);
+    let (code, out, err) = run_line("fit-t-vis --v-stick 0.016");
     assert_eq!(code, 2, "{out}");
     assert!(
         err.contains("--v-stick = 0.016") && err.contains("0.01659400272627634"),
@@ -153,7 +153,7 @@ fn fit_below_jkr_is_refused() {
 /// says how far v-stick must search, and v-stick at the fitted T_vis gives the target back.
 #[test]
 fn fit_above_the_default_limit_round_trips() {
-    let j = json(&["fit-t-vis", "--v-stick", "20", "--json"]);
+    let j = json_of("fit-t-vis --v-stick 20 --json");
     let t = f(&j["t_vis"]);
     let w = j["warnings"].as_array().unwrap();
     assert!(
@@ -171,14 +171,7 @@ fn fit_above_the_default_limit_round_trips() {
 /// limit, 0, with a warning that says why; v_max is recorded as not given (null).
 #[test]
 fn fit_range_down_to_the_jkr_limit_warns() {
-    let j = json(&[
-        "fit-t-vis",
-        "--v-stick",
-        "0.04",
-        "--v-stick-err",
-        "0.03",
-        "--json",
-    ]);
+    let j = json_of("fit-t-vis --v-stick 0.04 --v-stick-err 0.03 --json");
     assert_eq!(f(&j["t_vis_min"]), 0.0);
     assert!(j["input"]["v_max"].is_null(), "{j}");
     let w = j["warnings"].as_array().unwrap();
@@ -192,12 +185,12 @@ fn fit_range_down_to_the_jkr_limit_warns() {
 /// Valid but implausible input warns, on stderr and in the JSON.
 #[test]
 fn implausible_input_warns() {
-    let (code, out, err) = run(&["jkr", "--radius", "60", "--json"]);
+    let (code, out, err) = run_line("jkr --radius 60 --json");
     assert_eq!(code, 0);
     assert!(err.contains("did you mean 60e-6 m?"), "{err}");
     let j: Value = serde_json::from_str(&out).unwrap();
     assert_eq!(j["warnings"].as_array().unwrap().len(), 1);
-    let (code, out, err) = run(&["collide", "--t-vis", "1e-9", "--v-in", "2000", "--json"]);
+    let (code, out, err) = run_line("collide --t-vis 1e-9 --v-in 2000 --json");
     assert_eq!(code, 0, "{err}");
     let j: Value = serde_json::from_str(&out).unwrap();
     assert!(
@@ -213,8 +206,7 @@ fn implausible_input_warns() {
 /// override fixes a bad field and is then named itself; titles use the file's stem.
 #[test]
 fn material_file_errors_name_the_file() {
-    let dir = std::env::temp_dir().join(format!("stickiness-files-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("files");
     let path = dir.join("ice.json");
     let p = path.to_str().unwrap();
     std::fs::write(
@@ -245,21 +237,13 @@ fn material_file_errors_name_the_file() {
         err.contains("not found") && err.contains("nothing.json"),
         "{err}"
     );
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// A trajectory path that cannot be written is bad input (exit 2) that names the path.
 #[test]
 fn unwritable_trajectory_is_bad_input() {
-    let (code, _, err) = run(&[
-        "collide",
-        "--t-vis",
-        "1e-9",
-        "--v-in",
-        "0.04",
-        "--trajectory",
-        "/nonexistent/t.csv",
-    ]);
+    let (code, _, err) =
+        run_line("collide --t-vis 1e-9 --v-in 0.04 --trajectory /nonexistent/t.csv");
     assert_eq!(code, 2);
     assert!(err.contains("/nonexistent/t.csv"), "{err}");
 }
@@ -276,7 +260,7 @@ fn one_number_format() {
     );
     assert!(text.lines().all(|l| !l.ends_with(' ')), "{text:?}");
     let (_, text, _) = run(&["jkr"]);
-    let j = json(&["jkr", "--json"]);
+    let j = json_of("jkr --json");
     for key in ["a_eq", "tabor", "f_crit", "v_stick_jkr"] {
         let shown = j[key].to_string();
         assert!(
@@ -290,7 +274,7 @@ fn one_number_format() {
 /// `--help` shows defaults in the same format, and collide's help explains the sign of v_out.
 #[test]
 fn help_texts() {
-    let (_, help, _) = run(&["v-stick", "--help"]);
+    let (_, help, _) = run_line("v-stick --help");
     for default in [
         "[default: 0.00006]",
         "[default: 0.01]",
@@ -299,7 +283,7 @@ fn help_texts() {
     ] {
         assert!(help.contains(default), "{default} not in {help}");
     }
-    let (_, help, _) = run(&["collide", "--help"]);
+    let (_, help, _) = run_line("collide --help");
     assert!(
         help.contains("v_out < 0") && help.contains("v_out > 0"),
         "{help}"
@@ -310,8 +294,7 @@ fn help_texts() {
 /// `--t-end` keeps a sticking collision going: Figure 2's spiral towards the JKR point.
 #[test]
 fn t_end_records_the_spiral() {
-    let dir = std::env::temp_dir().join(format!("stickiness-spiral-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = TempDir::new("spiral");
     let path = dir.join("spiral.csv");
     let p = path.to_str().unwrap();
     let j = json(&[
@@ -336,5 +319,4 @@ fn t_end_records_the_spiral() {
         .map(|x| x.parse().unwrap())
         .collect();
     assert!(last[0] >= 2e-5, "integrated to {}", last[0]);
-    std::fs::remove_dir_all(&dir).unwrap();
 }

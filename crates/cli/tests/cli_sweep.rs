@@ -5,16 +5,13 @@
 
 mod common;
 
-use common::{json, run};
-use std::path::{Path, PathBuf};
+use common::{json, run, TempDir};
+use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::Instant;
 
-fn dir(name: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("stickiness-sweep-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+fn dir(name: &str) -> TempDir {
+    TempDir::new(&format!("sweep-{name}"))
 }
 
 fn sweep(args: &[&str], out: &Path) -> (i32, String, String) {
@@ -112,7 +109,6 @@ fn rows_in_grid_order_equal_single_points() {
             }
         }
     }
-    std::fs::remove_dir_all(&d).unwrap();
 }
 
 /// A sweep killed with SIGKILL part-way, then run again with --resume, ends byte-identical to
@@ -175,7 +171,6 @@ fn kill_and_resume_gives_the_same_bytes() {
         std::fs::read(&part).unwrap() == expected,
         "the resumed file differs"
     );
-    std::fs::remove_dir_all(&d).unwrap();
 }
 
 /// --resume drops a torn last line; an existing file needs --resume or --force; a file of
@@ -230,7 +225,6 @@ fn file_contract() {
             "{args:?}: a file was written before the check"
         );
     }
-    std::fs::remove_dir_all(&d).unwrap();
 }
 
 /// Geometry and law axes fill their columns; JSON Lines carry the same values.
@@ -238,20 +232,9 @@ fn file_contract() {
 fn columns_and_jsonl() {
     let d = dir("columns");
     let csv = d.join("s.csv");
-    let (code, _, err) = sweep(
-        &[
-            "--material",
-            "co2",
-            "--radius",
-            "6e-5",
-            "--wall",
-            "--t-vis-law",
-            "co2",
-            "--gamma-sv",
-            "0.07,0.08",
-        ],
-        &csv,
-    );
+    let args = "--material co2 --radius 6e-5 --wall --t-vis-law co2 --gamma-sv 0.07,0.08";
+    let args: Vec<&str> = args.split_whitespace().collect();
+    let (code, _, err) = sweep(&args, &csv);
     assert_eq!(code, 0, "{err}");
     let r = rows(&csv);
     assert_eq!(r.len(), 2);
@@ -266,22 +249,7 @@ fn columns_and_jsonl() {
     let t: f64 = r[0]["t_vis"].parse().unwrap();
     assert!((t / (1e-11 * 60f64.powf(1.11)) - 1.0).abs() < 1e-12); // Section 5.3 CO2 law
     let jl = d.join("s.jsonl");
-    let (code, _, err) = sweep(
-        &[
-            "--material",
-            "co2",
-            "--radius",
-            "6e-5",
-            "--wall",
-            "--t-vis-law",
-            "co2",
-            "--gamma-sv",
-            "0.07,0.08",
-            "--format",
-            "jsonl",
-        ],
-        &jl,
-    );
+    let (code, _, err) = sweep(&[&args[..], &["--format", "jsonl"]].concat(), &jl);
     assert_eq!(code, 0, "{err}");
     let text = std::fs::read_to_string(&jl).unwrap();
     let lines: Vec<serde_json::Value> = text
@@ -294,7 +262,6 @@ fn columns_and_jsonl() {
         r[0]["v_stick"].parse::<f64>().unwrap()
     );
     assert_eq!(lines[1]["radius2"], serde_json::Value::Null);
-    std::fs::remove_dir_all(&d).unwrap();
 }
 
 /// Progress goes to stderr as plain lines when stderr is not a terminal.
@@ -304,5 +271,4 @@ fn progress_lines_when_not_a_terminal() {
     let (code, _, err) = sweep(&SMALL, &d.join("s.csv"));
     assert_eq!(code, 0);
     assert!(err.contains("sweep: 12/12 rows (100.0 %)"), "{err}");
-    std::fs::remove_dir_all(&d).unwrap();
 }

@@ -6,6 +6,18 @@ use numerics::format::number;
 use numerics::positive;
 use std::f64::consts::PI;
 
+/// The JKR quantities of a contact as `(name, SI unit)`, in the order the CLI's `jkr` and
+/// Python's `jkr` report them; [`Contact::jkr_values`] gives their values.
+pub const JKR_QUANTITIES: [(&str, &str); 8] = [
+    ("a_eq", "m"),
+    ("delta_eq", "m"),
+    ("tabor", ""),
+    ("f_crit", "N"),
+    ("delta_crit", "m"),
+    ("e_stick", "J"),
+    ("e_break", "J"),
+    ("v_stick_jkr", "m/s"),
+];
 /// Range of action of the surface forces, epsilon = 0.3 nm (Section 2.2, after Krijt et al. 2013), in m.
 pub const SURFACE_FORCE_RANGE: f64 = 0.3e-9;
 
@@ -261,6 +273,20 @@ impl Contact {
     /// Energy to break a contact at equilibrium E_break,JKR = 1.54 F_crit delta_crit (J) (Section 6).
     pub fn e_break_jkr(&self) -> f64 {
         E_BREAK_COEFF * self.f_crit() * self.delta_crit()
+    }
+
+    /// The values of [`JKR_QUANTITIES`] for this contact (SI), in its order.
+    pub fn jkr_values(&self) -> [f64; 8] {
+        [
+            self.a_eq(),
+            self.delta_eq(),
+            self.tabor(),
+            self.f_crit(),
+            self.delta_crit(),
+            self.e_stick_jkr(),
+            self.e_break_jkr(),
+            self.v_stick_jkr(),
+        ]
     }
 
     /// Elastic force F_E = (2E*/(3R)) (3 a delta R - a^3) (N) at contact radius `a` (m) and mutual

@@ -28,9 +28,7 @@ fn main() -> Result<(), DynamicsError> {
     let run = |contact: Contact, t_vis: f64, method: Method, rtol: f64, v: f64| {
         let opts = SolverOptions {
             method,
-            rtol,
-            atol: 1e-3 * rtol,
-            ..SolverOptions::default()
+            ..SolverOptions::at_rtol(rtol)
         };
         Collider::new(contact, &law, t_vis)?
             .with_options(opts)?

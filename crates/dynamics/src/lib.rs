@@ -55,8 +55,8 @@ pub mod sticking;
 pub use collider::{Collider, EPS};
 pub use error::DynamicsError;
 pub use options::{
-    auto_explicit_step_budget, Backend, Method, SolverOptions, AUTO_EXPLICIT_LAMBDA_MAX,
-    AUTO_EXPLICIT_RTOL_FACTOR, AUTO_EXPLICIT_STEPS_AT_RTOL_1E8, H0,
+    auto_explicit_step_budget, Backend, Method, SolverOptions, ATOL_PER_RTOL,
+    AUTO_EXPLICIT_LAMBDA_MAX, AUTO_EXPLICIT_RTOL_FACTOR, AUTO_EXPLICIT_STEPS_AT_RTOL_1E8, H0,
 };
 pub use outcome::{Collision, Outcome, StickingCriterion, TrajectoryPoint};
 pub use rebound::Rebound;

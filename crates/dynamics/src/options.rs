@@ -99,7 +99,27 @@ pub struct SolverOptions {
     pub decide_after: f64,
 }
 
+/// Absolute tolerance per unit of relative tolerance of [`SolverOptions::at_rtol`]: the
+/// nondimensional states are of order one, so a thousandth keeps the absolute test below the
+/// relative one, as in the default settings (1e-12 at 1e-9).
+pub const ATOL_PER_RTOL: f64 = 1e-3;
+
 impl SolverOptions {
+    /// The default settings at relative tolerance `rtol`, with absolute tolerance
+    /// [`ATOL_PER_RTOL`] `rtol`.
+    ///
+    /// ```
+    /// use dynamics::SolverOptions;
+    /// let o = SolverOptions::at_rtol(1e-6);
+    /// assert_eq!((o.rtol, o.atol), (1e-6, 1e-3 * 1e-6));
+    /// ```
+    pub const fn at_rtol(rtol: f64) -> Self {
+        let mut o = Self::DEFAULT;
+        o.rtol = rtol;
+        o.atol = ATOL_PER_RTOL * rtol;
+        o
+    }
+
     /// Checks every field: `0 < rtol < 1`, `atol > 0`, `decide_after >= 0` (all finite) and
     /// `max_oscillations >= 1`.
     pub fn validate(&self) -> Result<(), OutOfRange> {
@@ -132,18 +152,24 @@ impl SolverOptions {
     }
 }
 
+impl SolverOptions {
+    /// The defaults, as a constant: [`Method::Auto`], nalgebra, rtol 1e-9, atol 1e-12, a budget
+    /// of 2e6 steps, one oscillation, an energy margin of 1e-4, no trajectory, decided at once.
+    pub const DEFAULT: SolverOptions = SolverOptions {
+        method: Method::Auto,
+        backend: Backend::Nalgebra,
+        rtol: 1e-9,
+        atol: 1e-12,
+        max_steps: 2_000_000,
+        max_oscillations: 1,
+        energy_margin: 1e-4,
+        record_trajectory: false,
+        decide_after: 0.0,
+    };
+}
+
 impl Default for SolverOptions {
     fn default() -> Self {
-        Self {
-            method: Method::Auto,
-            backend: Backend::Nalgebra,
-            rtol: 1e-9,
-            atol: 1e-12,
-            max_steps: 2_000_000,
-            max_oscillations: 1,
-            energy_margin: 1e-4,
-            record_trajectory: false,
-            decide_after: 0.0,
-        }
+        Self::DEFAULT
     }
 }

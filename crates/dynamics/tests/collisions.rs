@@ -175,9 +175,7 @@ fn solvers_agree_and_converge() {
             let e = |method: Method, rtol: f64| {
                 let opts = SolverOptions {
                     method,
-                    rtol,
-                    atol: 1e-3 * rtol,
-                    ..Default::default()
+                    ..SolverOptions::at_rtol(rtol)
                 };
                 co2_collider(&law, t_vis, opts).collide(v_in).unwrap().e
             };
@@ -244,11 +242,7 @@ fn continuing_from_the_rebound_reproduces_the_collision() {
     let law = law();
     for (t_vis, v_in) in [(1e-9, 0.045), (1e-9, 0.0405), (1e-14, 0.025)] {
         let collider = |rtol: f64| {
-            let opts = SolverOptions {
-                rtol,
-                atol: 1e-3 * rtol,
-                ..Default::default()
-            };
+            let opts = SolverOptions::at_rtol(rtol);
             co2_collider(&law, t_vis, opts)
         };
         let (col, tight) = (collider(1e-9), collider(1e-10));

@@ -185,34 +185,9 @@ pub fn jkr<'py>(
     let n = bodies.radius.len();
     let rows = parallel::map(py, n, |i| {
         let c = bodies.contact(&material, i)?;
-        Ok((
-            [
-                c.a_eq(),
-                c.delta_eq(),
-                c.tabor(),
-                c.f_crit(),
-                c.delta_crit(),
-                c.e_stick_jkr(),
-                c.e_break_jkr(),
-                c.v_stick_jkr(),
-            ],
-            warned(i, c.warnings()),
-        ))
+        Ok((c.jkr_values(), warned(i, c.warnings())))
     })?;
-    columns(
-        py,
-        [
-            "a_eq",
-            "delta_eq",
-            "tabor",
-            "f_crit",
-            "delta_crit",
-            "e_stick",
-            "e_break",
-            "v_stick_jkr",
-        ],
-        &rows,
-    )
+    columns(py, thresholds::JKR_QUANTITIES.map(|q| q.0), &rows)
 }
 
 /// One head-on collision per element: outcome, e, v_out (m/s), contact_time (s; NaN for

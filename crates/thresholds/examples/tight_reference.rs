@@ -10,25 +10,26 @@
 //! search without rebound restarts (`SearchOptions::restarts`).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use thresholds::{sticking_thresholds, Contact, CrackLaw, Geometry, Material, SearchOptions};
+#[path = "common/mod.rs"]
+mod common;
+
+use thresholds::{sticking_thresholds, CrackLaw, SearchOptions};
 
 fn main() {
     let law = CrackLaw::new(0.01).unwrap();
-    let co2 = Contact::new(Material::co2(), Geometry::identical(60e-6)).unwrap();
-    let h2o = Contact::new(Material::h2o(), Geometry::identical(90e-6)).unwrap();
     let reference = SearchOptions::reference();
     println!(
         "case | V_stick - ref | V_double_onset - ref | collisions | without restarts: V_stick - ref | V_double_onset - ref"
     );
-    for (name, contact, t_vis) in [
-        ("CO2 60 um, T_vis = 1e-9 s", co2, 1e-9),
-        ("CO2 60 um, T_vis = 1e-14 s", co2, 1e-14),
-        ("H2O 90 um, T_vis = 1e-9 s", h2o, 1e-9),
-        ("CO2 60 um, T_vis = 1e-12 s", co2, 1e-12),
-        ("CO2 60 um, T_vis = 1e-11 s", co2, 1e-11),
-        ("CO2 60 um, T_vis = 1e-10 s", co2, 1e-10),
-        ("CO2 60 um, T_vis = 1e-8 s", co2, 1e-8),
-    ] {
+    for (name, contact, t_vis) in common::cases(&[
+        ("co2", 1e-9),
+        ("co2", 1e-14),
+        ("h2o", 1e-9),
+        ("co2", 1e-12),
+        ("co2", 1e-11),
+        ("co2", 1e-10),
+        ("co2", 1e-8),
+    ]) {
         let r = sticking_thresholds(&contact, &law, t_vis, &reference).unwrap();
         let d = sticking_thresholds(&contact, &law, t_vis, &SearchOptions::default()).unwrap();
         let no_restarts = SearchOptions {

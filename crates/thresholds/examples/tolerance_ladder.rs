@@ -11,25 +11,24 @@
 //! shifts and the largest per integrator and rtol.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+#[path = "common/mod.rs"]
+mod common;
+
 use dynamics::Method;
-use thresholds::{
-    sticking_thresholds, Contact, CrackLaw, Geometry, Material, SearchOptions, SolverOptions,
-};
+use thresholds::{sticking_thresholds, Contact, CrackLaw, SearchOptions, SolverOptions};
 
 fn main() {
     let law = CrackLaw::new(0.01).unwrap();
-    let co2 = Contact::new(Material::co2(), Geometry::identical(60e-6)).unwrap();
-    let h2o = Contact::new(Material::h2o(), Geometry::identical(90e-6)).unwrap();
-    let cases = [
-        ("CO2 60 um", co2, 1e-14),
-        ("CO2 60 um", co2, 1e-12),
-        ("CO2 60 um", co2, 1e-11),
-        ("CO2 60 um", co2, 1e-10),
-        ("CO2 60 um", co2, 1e-9),
-        ("CO2 60 um", co2, 1e-8),
-        ("H2O 90 um", h2o, 1e-11),
-        ("H2O 90 um", h2o, 1e-9),
-    ];
+    let cases = common::cases(&[
+        ("co2", 1e-14),
+        ("co2", 1e-12),
+        ("co2", 1e-11),
+        ("co2", 1e-10),
+        ("co2", 1e-9),
+        ("co2", 1e-8),
+        ("h2o", 1e-11),
+        ("h2o", 1e-9),
+    ]);
     let rtols = [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9];
     let methods = [Method::Bdf, Method::Auto];
     let search = |contact: &Contact, t_vis: f64, method: Method, rtol: f64| {
@@ -37,9 +36,7 @@ fn main() {
             rel_tol: 1e-9,
             solver: SolverOptions {
                 method,
-                rtol,
-                atol: 1e-3 * rtol,
-                ..SolverOptions::default()
+                ..SolverOptions::at_rtol(rtol)
             },
             ..SearchOptions::default()
         };
@@ -55,7 +52,7 @@ fn main() {
             reference.v_double_onset.unwrap(),
         );
         for (m, method) in methods.iter().enumerate() {
-            let mut line = format!("{name} T_vis = {t_vis:e} s, {method:?}:");
+            let mut line = format!("{name}, {method:?}:");
             for (r, rtol) in rtols.iter().enumerate() {
                 let (s, o) = search(&contact, t_vis, *method, *rtol);
                 let (ds, d_o) = (s / s_ref - 1.0, o / o_ref - 1.0);

@@ -53,7 +53,7 @@ pub mod search;
 pub mod stick;
 pub mod sweep;
 
-pub use contact::{Contact, ContactError, Geometry, Material, Warning};
+pub use contact::{Contact, ContactError, Geometry, Material, Warning, JKR_QUANTITIES};
 pub use dynamics::{
     Collider, Collision, DynamicsError, Method, Outcome, SolverOptions, StickingCriterion,
     TrajectoryPoint,

@@ -298,26 +298,16 @@ pub fn sweep_t_vis(
 mod tests {
     use super::*;
 
-    fn seen(v: f64, outcome: Outcome, v_out: f64) -> Seen {
-        Seen {
-            v,
-            outcome,
-            v_out,
-            rung: 3,
-            rebound: None,
-        }
-    }
-
     /// The zero of the line through (1, 0.1) and (2, -0.3) is 1.25; a sticking lower end has no
     /// V_out, so the centre; a line whose zero falls outside (both ends bounce) gives the centre.
     #[test]
     fn v_stick_is_the_zero_of_v_out_between_the_ends() {
-        let double = seen(1.0, Outcome::DoubleCollision, 0.1);
-        let bounce = seen(2.0, Outcome::Bouncing, -0.3);
+        let double = Seen::at(1.0, Outcome::DoubleCollision, 0.1);
+        let bounce = Seen::at(2.0, Outcome::Bouncing, -0.3);
         assert!((v_out_zero((double, bounce)) - 1.25).abs() < 1e-15);
-        let stick = seen(1.0, Outcome::Sticking, 0.0);
+        let stick = Seen::at(1.0, Outcome::Sticking, 0.0);
         assert_eq!(v_out_zero((stick, bounce)), 1.5);
-        let far = seen(1.0, Outcome::DoubleCollision, -0.1);
+        let far = Seen::at(1.0, Outcome::DoubleCollision, -0.1);
         assert_eq!(v_out_zero((far, bounce)), 1.5);
     }
 }

@@ -194,9 +194,7 @@ fn v_stick_converges_and_solvers_agree() {
             rel_tol: 1e-10,
             solver: SolverOptions {
                 method,
-                rtol,
-                atol: 1e-3 * rtol,
-                ..Default::default()
+                ..SolverOptions::at_rtol(rtol)
             },
             ..Default::default()
         };

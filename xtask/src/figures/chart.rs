@@ -194,6 +194,13 @@ macro_rules! star {
 }
 pub(crate) use star;
 
+/// A white SVG picture of `size` pixels at `path`.
+pub fn picture(path: &std::path::Path, size: (u32, u32)) -> Result<Area<'_>, Error> {
+    let root = SVGBackend::new(path, size).into_drawing_area();
+    root.fill(&WHITE)?;
+    Ok(root)
+}
+
 /// The two panels of a [`SIZE_TWO`] picture, side by side.
 pub fn two_panels<'a>(root: &Area<'a>) -> (Area<'a>, Area<'a>) {
     root.split_horizontally(SIZE_TWO.0 / 2)

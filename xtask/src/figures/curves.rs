@@ -3,9 +3,11 @@
 
 use super::chart::*;
 use super::Error;
+use crate::table::Cell;
 use numerics::format::number;
 use plotters::prelude::*;
 use std::path::Path;
+use thresholds::paper::Measurement;
 use thresholds::StickingThresholds;
 
 /// V_stick against T_vis for one value of a parameter (k, gamma_SV or the geometry).
@@ -21,6 +23,27 @@ pub struct ThresholdCurve {
 }
 
 impl ThresholdCurve {
+    /// The table rows of this curve: `label`, then T_vis, V_stick, V_double_onset and
+    /// V_stick,JKR, and no_bouncing_below when `with_limit`, one row per T_vis.
+    pub fn rows(&self, label: Cell, with_limit: bool) -> Vec<Vec<Cell>> {
+        self.points
+            .iter()
+            .map(|th| {
+                let mut row = vec![
+                    label.clone(),
+                    th.t_vis.into(),
+                    th.v_stick.into(),
+                    th.v_double_onset.into(),
+                    th.v_stick_jkr.into(),
+                ];
+                if with_limit {
+                    row.push(th.no_bouncing_below().into());
+                }
+                row
+            })
+            .collect()
+    }
+
     /// `(T_vis, V_stick)` where V_stick exists.
     pub fn v_stick(&self) -> Vec<(f64, f64)> {
         self.points
@@ -30,18 +53,24 @@ impl ThresholdCurve {
     }
 }
 
-/// V_stick against T_vis: one line per curve, the experimental band and the JKR stars.
+/// V_stick against T_vis: one line per curve, the experiment (a band for its uncertainty) and
+/// the JKR stars.
 pub fn v_stick_chart(
     path: &Path,
     caption: &str,
     curves: &[(String, &ThresholdCurve)],
     (x0, x1): (f64, f64),
-    band: Option<(f64, f64)>,
-    line_at: f64,
-    experiment: &str,
+    experiment: &Measurement,
 ) -> Result<(), Error> {
-    let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
-    root.fill(&WHITE)?;
+    let line_at = experiment.v_stick;
+    let err = experiment.v_stick_err;
+    let band = (err > 0.0).then_some((line_at - err, line_at + err));
+    let what = if err > 0.0 {
+        format!("experiment {} +- {} m/s", number(line_at), number(err))
+    } else {
+        format!("experiment {} m/s", number(line_at))
+    };
+    let root = picture(path, SIZE_ONE)?;
     let values = curves
         .iter()
         .flat_map(|(_, c)| c.v_stick().into_iter().map(|p| p.1).chain([c.v_stick_jkr]))
@@ -70,7 +99,7 @@ pub fn v_stick_chart(
             [(x0, line_at), (x1, line_at)],
             BLACK.stroke_width(1),
         ))?
-        .label(experiment.to_string())
+        .label(what)
         .legend(legend_line(BLACK));
     for (j, (name, c)) in curves.iter().enumerate() {
         let col = COLOURS[j % COLOURS.len()];

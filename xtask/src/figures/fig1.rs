@@ -73,8 +73,7 @@ impl Figure1 {
 impl Figure1 {
     /// `fig1.svg`: |v| against beta for each k, and v near beta = 1.
     pub fn draw(&self, path: &Path) -> Result<(), Error> {
-        let root = SVGBackend::new(path, SIZE_TWO).into_drawing_area();
-        root.fill(&WHITE)?;
+        let root = picture(path, SIZE_TWO)?;
         let (left, right) = two_panels(&root);
         let mut chart = log_log(
             &left,

@@ -144,8 +144,7 @@ fn resample(traj: &[TrajectoryPoint], c: &Contact, n: usize) -> Vec<TrajectoryPo
 impl Figure2 {
     /// `fig2.svg`: the trajectories in the delta-a and delta-delta_dot planes.
     pub fn draw(&self, path: &Path) -> Result<(), Error> {
-        let root = SVGBackend::new(path, SIZE_TWO).into_drawing_area();
-        root.fill(&WHITE)?;
+        let root = picture(path, SIZE_TWO)?;
         let (left, right) = two_panels(&root);
         let points = || self.runs.iter().flat_map(|r| r.points.iter());
         // plotted in nm, um and cm/s

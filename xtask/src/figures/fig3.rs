@@ -116,8 +116,7 @@ impl Figure3 {
 impl Figure3 {
     /// `fig3.svg`: e against V_in, observed and computed.
     pub fn draw(&self, path: &Path) -> Result<(), Error> {
-        let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
-        root.fill(&WHITE)?;
+        let root = picture(path, SIZE_ONE)?;
         let (_, vs) = self.transitions();
         let mut chart = linear(
             &root,

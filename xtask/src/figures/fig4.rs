@@ -53,15 +53,7 @@ impl Figure4 {
             &["k", "t_vis", "v_stick", "v_double_onset", "v_stick_jkr"],
         );
         for c in &self.curves {
-            for th in &c.points {
-                t.push(vec![
-                    c.parameter.into(),
-                    th.t_vis.into(),
-                    th.v_stick.into(),
-                    th.v_double_onset.into(),
-                    th.v_stick_jkr.into(),
-                ]);
-            }
+            t.rows.extend(c.rows(c.parameter.into(), false));
         }
         vec![t]
     }
@@ -81,13 +73,7 @@ impl Figure4 {
             "Figure 4: CO2, R1 = 60 um",
             &curves,
             (1e-12, 1e-8),
-            Some((e.v_stick - e.v_stick_err, e.v_stick + e.v_stick_err)),
-            e.v_stick,
-            &format!(
-                "experiment {} +- {} m/s",
-                number(e.v_stick),
-                number(e.v_stick_err)
-            ),
+            &e,
         )
     }
 }

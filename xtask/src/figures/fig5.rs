@@ -56,16 +56,7 @@ impl Figure5 {
             &["gamma_sv", "t_vis", "v_stick", "v_double_onset", "v_stick_jkr", "no_bouncing_below"],
         );
         for c in &self.curves {
-            for th in &c.points {
-                t.push(vec![
-                    c.parameter.into(),
-                    th.t_vis.into(),
-                    th.v_stick.into(),
-                    th.v_double_onset.into(),
-                    th.v_stick_jkr.into(),
-                    th.no_bouncing_below().into(),
-                ]);
-            }
+            t.rows.extend(c.rows(c.parameter.into(), true));
         }
         vec![t]
     }
@@ -84,9 +75,7 @@ impl Figure5 {
             "Figure 5: H2O, R1 = 90 um (x: no bouncing beyond)",
             &curves,
             (1e-12, 1e-7),
-            None,
-            MUSIOLIK_2016B.v_stick,
-            &format!("experiment {} m/s", number(MUSIOLIK_2016B.v_stick)),
+            &MUSIOLIK_2016B,
         )
     }
 }

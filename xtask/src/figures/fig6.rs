@@ -147,8 +147,7 @@ impl Figure6 {
 impl Figure6 {
     /// `fig6.svg`: fitted T_vis with their ranges, and the size laws.
     pub fn draw(&self, path: &Path) -> Result<(), Error> {
-        let root = SVGBackend::new(path, SIZE_ONE).into_drawing_area();
-        root.fill(&WHITE)?;
+        let root = picture(path, SIZE_ONE)?;
         let y = log_range(
             self.laws
                 .iter()

@@ -109,8 +109,7 @@ impl Figure7 {
 impl Figure7 {
     /// `fig7.svg`: V_stick and V_frag against the monomer radius.
     pub fn draw(&self, path: &Path) -> Result<(), Error> {
-        let root = SVGBackend::new(path, SIZE_TWO).into_drawing_area();
-        root.fill(&WHITE)?;
+        let root = picture(path, SIZE_TWO)?;
         let (left, right) = two_panels(&root);
         type Pick = fn(&crate::figures::SizePoint) -> Option<f64>;
         let series: [(&str, RGBColor, Pick); 3] = [

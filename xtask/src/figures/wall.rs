@@ -81,15 +81,7 @@ impl FigureWall {
             ],
         );
         for (name, c) in WALL_GEOMETRIES.iter().zip(&self.curves) {
-            for th in &c.points {
-                t.push(vec![
-                    (*name).into(),
-                    th.t_vis.into(),
-                    th.v_stick.into(),
-                    th.v_double_onset.into(),
-                    th.v_stick_jkr.into(),
-                ]);
-            }
+            t.rows.extend(c.rows((*name).into(), false));
         }
         vec![t]
     }
@@ -116,13 +108,7 @@ impl FigureWall {
             "Sphere on a wall: CO2, R1 = 60 um, k = 0.01",
             &curves,
             (1e-12, 1e-8),
-            Some((e.v_stick - e.v_stick_err, e.v_stick + e.v_stick_err)),
-            e.v_stick,
-            &format!(
-                "experiment {} +- {} m/s",
-                number(e.v_stick),
-                number(e.v_stick_err)
-            ),
+            &e,
         )
     }
 }

@@ -1,6 +1,6 @@
 //! `stickiness collide`: one head-on collision.
 
-use crate::args::{GeometryArgs, KArgs, MaterialArgs, Setup, TVisArgs};
+use crate::args::{PointArgs, Setup};
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
@@ -14,16 +14,10 @@ use std::path::PathBuf;
 #[derive(Debug, Args)]
 pub struct CollideArgs {
     #[command(flatten)]
-    pub material: MaterialArgs,
-    #[command(flatten)]
-    pub geometry: GeometryArgs,
-    #[command(flatten)]
-    pub t_vis: TVisArgs,
+    pub point: PointArgs,
     /// Impact speed V_in (m/s, > 0).
     #[arg(long, allow_hyphen_values = true)]
     pub v_in: f64,
-    #[command(flatten)]
-    pub k: KArgs,
     /// Write the trajectory (t, a, delta, delta_dot, energy, beta; SI) to this CSV file.
     #[arg(long, value_name = "FILE.csv")]
     pub trajectory: Option<PathBuf>,
@@ -35,11 +29,9 @@ pub struct CollideArgs {
 
 /// Runs the command.
 pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
-    let mut setup = Setup::new(&args.material, &args.geometry)?;
-    let t_vis = args.t_vis.resolve(&mut setup, None)?;
+    let (mut setup, t_vis, law) = args.point.resolve(None)?;
     setup.with_input("v_in", args.v_in);
-    setup.with_input("k", args.k.k);
-    let law = args.k.crack_law()?;
+    setup.with_input("k", law.k());
     let opts = SolverOptions {
         record_trajectory: args.trajectory.is_some(),
         decide_after: args.t_end.unwrap_or(0.0),
@@ -48,7 +40,7 @@ pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
     if let Some(t) = args.t_end {
         setup.with_input("t_end", t);
     }
-    let collider = Collider::new(setup.contact, law, t_vis)?.with_options(opts)?;
+    let collider = Collider::new(setup.contact, &law, t_vis)?.with_options(opts)?;
     // open the trajectory file first: a path that cannot be written is bad input, found at once
     let file = match &args.trajectory {
         Some(path) => Some(std::fs::File::create(path).map_err(|e| {
@@ -73,7 +65,7 @@ pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
         setup.describe(),
         number(t_vis),
         number(args.v_in),
-        number(args.k.k)
+        number(law.k())
     ));
     r.warn(setup.contact.warnings());
     r.warn(Warning::for_speed("v_in", args.v_in));

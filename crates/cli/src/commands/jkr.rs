@@ -21,14 +21,9 @@ pub fn run(args: &JkrArgs) -> Result<Report, CliError> {
     let c = &setup.contact;
     let mut r = Report::new(format!("JKR contact of {}", setup.describe()));
     r.warn(c.warnings());
-    r.number("a_eq", c.a_eq(), "m")?;
-    r.number("delta_eq", c.delta_eq(), "m")?;
-    r.number("tabor", c.tabor(), "")?;
-    r.number("f_crit", c.f_crit(), "N")?;
-    r.number("delta_crit", c.delta_crit(), "m")?;
-    r.number("e_stick", c.e_stick_jkr(), "J")?;
-    r.number("e_break", c.e_break_jkr(), "J")?;
-    r.number("v_stick_jkr", c.v_stick_jkr(), "m/s")?;
+    for ((key, unit), value) in contact::JKR_QUANTITIES.iter().zip(c.jkr_values()) {
+        r.number(key, value, unit)?;
+    }
     r.input(setup.input);
     Ok(r)
 }

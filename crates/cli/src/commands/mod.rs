@@ -9,6 +9,7 @@ pub mod sweep;
 pub mod v_frag;
 pub mod v_stick;
 
+use crate::args::Setup;
 use crate::output::Report;
 use numerics::format::number;
 
@@ -34,4 +35,15 @@ pub fn no_bouncing_below(r: &mut Report, v_stick: Option<f64>, v_max: f64) {
         None => serde_json::Value::from(v_max),
     };
     r.json_only("no_bouncing_below", value);
+}
+
+/// A report titled `"{what}, T_vis = .. s, k = .."`, with the contact's warnings.
+pub fn point_report(what: String, setup: &Setup, t_vis: f64, k: f64) -> Report {
+    let mut r = Report::new(format!(
+        "{what}, T_vis = {} s, k = {}",
+        number(t_vis),
+        number(k)
+    ));
+    r.warn(setup.contact.warnings());
+    r
 }

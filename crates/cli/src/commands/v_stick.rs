@@ -1,7 +1,7 @@
 //! `stickiness v-stick`: the threshold velocity for sticking and the onset of double collisions.
 
-use super::{no_bouncing_below, v_stick_rows};
-use crate::args::{GeometryArgs, KArgs, MaterialArgs, SearchArgs, Setup, TVisArgs};
+use super::{no_bouncing_below, point_report, v_stick_rows};
+use crate::args::{PointArgs, SearchArgs};
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
@@ -12,33 +12,20 @@ use numerics::format::number;
 #[derive(Debug, Args)]
 pub struct VStickArgs {
     #[command(flatten)]
-    pub material: MaterialArgs,
-    #[command(flatten)]
-    pub geometry: GeometryArgs,
-    #[command(flatten)]
-    pub t_vis: TVisArgs,
-    #[command(flatten)]
-    pub k: KArgs,
+    pub point: PointArgs,
     #[command(flatten)]
     pub search: SearchArgs,
 }
 
 /// Runs the command.
 pub fn run(args: &VStickArgs) -> Result<Report, CliError> {
-    let mut setup = Setup::new(&args.material, &args.geometry)?;
-    let t_vis = args.t_vis.resolve(&mut setup, None)?;
-    setup.with_input("k", args.k.k);
+    let (mut setup, t_vis, law) = args.point.resolve(None)?;
+    setup.with_input("k", law.k());
     let opts = args.search.options(&mut setup);
-    let law = args.k.crack_law()?;
     let th = thresholds::sticking_thresholds(&setup.contact, &law, t_vis, &opts)?;
     setup.with_input("v_max", th.v_max);
-    let mut r = Report::new(format!(
-        "Sticking thresholds of {}, T_vis = {} s, k = {}",
-        setup.describe(),
-        number(t_vis),
-        number(args.k.k)
-    ));
-    r.warn(setup.contact.warnings());
+    let what = format!("Sticking thresholds of {}", setup.describe());
+    let mut r = point_report(what, &setup, t_vis, law.k());
     v_stick_rows(&mut r, "v_stick", th.v_stick, th.v_max)?;
     r.optional(
         "v_double_onset",

@@ -17,9 +17,9 @@ use greenwood::CrackLaw;
 pub(crate) struct Rung {
     /// Relative tolerance of the collisions on this rung.
     pub(crate) rtol: f64,
-    /// Absolute tolerance of the nondimensional state: a thousandth of `rtol`, the ratio of the
-    /// search's own settings ([`crate::SearchOptions::default_solver`]: 1e-11 at 1e-8), since
-    /// the states are of order one.
+    /// Absolute tolerance of the nondimensional state: [`dynamics::ATOL_PER_RTOL`] `rtol`, the
+    /// ratio of the search's own settings ([`crate::SearchOptions::default_solver`]: 1e-11 at
+    /// 1e-8).
     pub(crate) atol: f64,
     /// A bound on how far this tolerance moves the transitions (relative to V_in) from a tight
     /// reference.
@@ -31,7 +31,7 @@ impl Rung {
     const fn new(rtol: f64, shift: f64) -> Self {
         Self {
             rtol,
-            atol: 1e-3 * rtol,
+            atol: dynamics::ATOL_PER_RTOL * rtol,
             shift,
         }
     }

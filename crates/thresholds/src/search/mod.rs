@@ -51,6 +51,21 @@ pub(crate) struct Seen {
     pub(crate) rebound: Option<Rebound>,
 }
 
+#[cfg(test)]
+impl Seen {
+    /// A full-tolerance collision at `v` (m/s) with `outcome` and `v_out` (m/s), for the unit
+    /// tests of the pure helpers.
+    pub(crate) fn at(v: f64, outcome: Outcome, v_out: f64) -> Seen {
+        Seen {
+            v,
+            outcome,
+            v_out,
+            rung: ladder::LADDER.len(),
+            rebound: None,
+        }
+    }
+}
+
 /// A transition between two classes of outcomes: the fastest speed below it and the slowest
 /// above it seen so far.
 pub(crate) type Bracket = (Option<Seen>, Option<Seen>);
@@ -266,13 +281,10 @@ impl<'a> Search<'a> {
 mod tests {
     use super::*;
 
-    fn seen(v: f64, outcome: Outcome, rung: usize) -> Seen {
+    fn on(rung: usize, (v, outcome): (f64, Outcome)) -> Seen {
         Seen {
-            v,
-            outcome,
-            v_out: 0.0,
             rung,
-            rebound: None,
+            ..Seen::at(v, outcome, 0.0)
         }
     }
 
@@ -280,12 +292,17 @@ mod tests {
     /// order of outcomes and is dropped; so is a coarse speed integrated again more finely.
     #[test]
     fn finer_collisions_overrule_coarse_ones() {
+        let (stick, double, bounce) = (
+            Outcome::Sticking,
+            Outcome::DoubleCollision,
+            Outcome::Bouncing,
+        );
         let pts = [
-            seen(1.0, Outcome::Bouncing, 0),
-            seen(1.1, Outcome::DoubleCollision, 3),
-            seen(1.2, Outcome::Bouncing, 0),
-            seen(1.2, Outcome::Bouncing, 3),
-            seen(0.9, Outcome::Sticking, 0),
+            on(0, (1.0, bounce)),
+            on(3, (1.1, double)),
+            on(0, (1.2, bounce)),
+            on(3, (1.2, bounce)),
+            on(0, (0.9, stick)),
         ];
         let kept: Vec<(f64, usize)> = trusted(&pts).iter().map(|p| (p.v, p.rung)).collect();
         assert_eq!(kept, [(1.1, 3), (1.2, 3), (0.9, 0)]);
@@ -294,13 +311,14 @@ mod tests {
     /// Each transition's bracket: the slowest speed above it and the fastest below that.
     #[test]
     fn brackets_of_both_transitions() {
-        let pts = [
-            seen(0.9, Outcome::Sticking, 3),
-            seen(1.0, Outcome::DoubleCollision, 3),
-            seen(1.1, Outcome::DoubleCollision, 3),
-            seen(1.3, Outcome::Bouncing, 3),
-            seen(1.2, Outcome::Bouncing, 3),
+        let outcomes = [
+            (0.9, Outcome::Sticking),
+            (1.0, Outcome::DoubleCollision),
+            (1.1, Outcome::DoubleCollision),
+            (1.3, Outcome::Bouncing),
+            (1.2, Outcome::Bouncing),
         ];
+        let pts = outcomes.map(|p| on(3, p));
         let ends = |(lo, hi): Bracket| (lo.map(|p| p.v), hi.map(|p| p.v));
         assert_eq!(
             ends(bracket_of(pts.iter(), Transition::DoubleOnset)),

@@ -319,19 +319,14 @@ impl Search<'_> {
 mod tests {
     use super::*;
 
+    /// A full-tolerance collision at `v` whose `v_out` gives its outcome.
     fn at(v: f64, v_out: f64) -> Seen {
         let outcome = if v_out > 0.0 {
             Outcome::DoubleCollision
         } else {
             Outcome::Bouncing
         };
-        Seen {
-            v,
-            outcome,
-            v_out,
-            rung: 3,
-            rebound: None,
-        }
+        Seen::at(v, outcome, v_out)
     }
 
     /// Closed forms: the line through (1, 1) and (3, -1) is zero at 2; the parabola

@@ -1,7 +1,7 @@
 //! The flags of `stickiness sweep` and what they determine: the grid, the search options and
 //! the header that identifies the sweep in its file.
 
-use crate::args::Overrides;
+use crate::args::{BulkOverrides, Overrides};
 use crate::error::CliError;
 use clap::{Args, ValueEnum};
 use numerics::format::number;
@@ -78,15 +78,9 @@ pub struct SweepArgs {
     /// Format of the output file.
     #[arg(long, value_enum, ignore_case = true, default_value = "csv")]
     pub format: Format,
-    /// Override Young's modulus E (Pa) of every material.
-    #[arg(long, allow_hyphen_values = true)]
-    pub young: Option<f64>,
-    /// Override the Poisson ratio nu (dimensionless, -1 < nu < 0.5) of every material.
-    #[arg(long, allow_hyphen_values = true)]
-    pub poisson: Option<f64>,
-    /// Override the density rho (kg/m^3) of every material.
-    #[arg(long, allow_hyphen_values = true)]
-    pub density: Option<f64>,
+    /// Overrides of every material's bulk constants.
+    #[command(flatten)]
+    pub bulk: BulkOverrides,
 }
 
 impl SweepArgs {
@@ -95,9 +89,7 @@ impl SweepArgs {
         // gamma_SV is an axis of the sweep; the other constants are overrides
         let overrides = Overrides {
             gamma_sv: None,
-            young: self.young,
-            poisson: self.poisson,
-            density: self.density,
+            bulk: self.bulk.clone(),
         };
         let materials = self
             .material
@@ -150,14 +142,8 @@ impl SweepArgs {
     /// axis in canonical form.
     fn command(&self) -> String {
         let mut command = vec![format!("stickiness sweep --material {}", self.material)];
-        for (flag, v) in [
-            ("--young", self.young),
-            ("--poisson", self.poisson),
-            ("--density", self.density),
-        ] {
-            if let Some(v) = v {
-                command.push(format!("{flag} {}", number(v)));
-            }
+        for (flag, v) in self.bulk.given() {
+            command.push(format!("{flag} {}", number(v)));
         }
         if let Some(s) = &self.gamma_sv {
             command.push(format!("--gamma-sv {}", canonical(s)));
