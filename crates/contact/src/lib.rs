@@ -49,6 +49,6 @@ pub use geometry::Geometry;
 pub use material::{elastic_from_sound_speeds, Material, PRESETS};
 pub use numerics::OutOfRange;
 pub use pair::{
-    Contact, Warning, JKR_QUANTITIES, PLAUSIBLE_RADIUS, PLAUSIBLE_SPEED_MAX, SURFACE_FORCE_RANGE,
-    TABOR_MIN,
+    Contact, Dimensionless, Warning, JKR_QUANTITIES, PLAUSIBLE_RADIUS, PLAUSIBLE_SPEED_MAX,
+    SURFACE_FORCE_RANGE, TABOR_MIN,
 };

@@ -353,10 +353,57 @@ impl Contact {
         self.e_star() * self.gamma() / (s0 * s0 * t_vis)
     }
 
+    /// The JKR time unit `t0 = sqrt(m* delta_eq / F0)`, `F0 = 3 pi gamma R = 2 F_crit` (s): the
+    /// time of the collision equations in JKR units (`docs/model.md`).
+    pub fn t0(&self) -> f64 {
+        let f0 = 2.0 * self.f_crit();
+        (self.m_star() * self.delta_eq() / f0).sqrt()
+    }
+
+    /// The two dimensionless numbers of a collision at relaxation time `t_vis` (s, > 0): in JKR
+    /// units the collision depends only on them, on k and on eps, so V_stick / V_stick,JKR is a
+    /// function of `(c_D, c_a)` for every material, size and geometry (Sections 2.3-2.6):
+    /// ```text
+    /// c_D = 2 (T_vis/nu^2) E* a_eq t0 / m*          (drag)
+    /// c_a = E* gamma t0 / (sigma0^2 T_vis a_eq)       (crack speed)
+    /// ```
+    /// `c_D` grows with T_vis and `c_a` falls as 1/T_vis; their product does not depend on
+    /// T_vis or on the density.
+    ///
+    /// # Example
+    /// ```
+    /// use contact::{Contact, Geometry, Material};
+    /// let c = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+    /// let (a, b) = (c.dimensionless(1e-9), c.dimensionless(2e-9));
+    /// assert!((b.c_d / a.c_d - 2.0).abs() < 1e-12 && (b.c_a / a.c_a - 0.5).abs() < 1e-12);
+    /// // four times the density at twice T_vis: the same collision
+    /// let dense = Contact::new(Material { density: 4.0 * 1560.0, ..Material::co2() }, Geometry::identical(60e-6))?;
+    /// let d = dense.dimensionless(2e-9);
+    /// assert!((d.c_d / a.c_d - 1.0).abs() < 1e-12 && (d.c_a / a.c_a - 1.0).abs() < 1e-12);
+    /// # Ok::<(), contact::ContactError>(())
+    /// ```
+    pub fn dimensionless(&self, t_vis: f64) -> Dimensionless {
+        let (a_eq, t0) = (self.a_eq(), self.t0());
+        Dimensionless {
+            c_d: 2.0 * self.drag_time(t_vis) * self.e_star() * a_eq * t0 / self.m_star(),
+            c_a: self.crack_speed_unit(t_vis) * t0 / a_eq,
+        }
+    }
+
     /// Contact radius at first contact (delta = 0) where beta = (1 + eps) k:
     /// `a = [2 pi R^2 (1 + eps) k gamma / E*]^(1/3)` (m) (Section 4.1), for `k` and `eps` dimensionless.
     pub fn initial_contact_radius(&self, k: f64, eps: f64) -> f64 {
         let r = self.reduced_radius();
         (2.0 * PI * r * r * (1.0 + eps) * k * self.gamma() / self.e_star()).cbrt()
     }
+}
+
+/// The two dimensionless numbers of a collision ([`Contact::dimensionless`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Dimensionless {
+    /// The drag number c_D = 2 (T_vis/nu^2) E* a_eq t0 / m* (dimensionless).
+    pub c_d: f64,
+    /// The crack-speed number c_a = E* gamma t0 / (sigma0^2 T_vis a_eq) (dimensionless), the
+    /// `lambda` of the collision equations.
+    pub c_a: f64,
 }

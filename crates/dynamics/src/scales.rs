@@ -23,26 +23,25 @@ impl Scales {
     pub fn new(contact: &Contact) -> Self {
         let a_eq = contact.a_eq();
         let delta_eq = contact.delta_eq();
-        let f0 = 2.0 * contact.f_crit(); // 3 pi gamma R
-        let t0 = (contact.m_star() * delta_eq / f0).sqrt();
+        let t0 = contact.t0();
         Self {
             a_eq,
             delta_eq,
             t0,
             v0: delta_eq / t0,
-            e0: 0.5 * f0 * delta_eq,
+            e0: contact.f_crit() * delta_eq,
         }
     }
 
-    /// Nondimensional parameters for relaxation time `t_vis` (s, > 0).
+    /// Nondimensional parameters for relaxation time `t_vis` (s, > 0): lambda = c_a and c_D of
+    /// [`Contact::dimensionless`].
     pub fn params(&self, contact: &Contact, t_vis: f64) -> Params {
+        let d = contact.dimensionless(t_vis);
         Params {
-            lambda: contact.crack_speed_unit(t_vis) * self.t0 / self.a_eq,
-            c_d: 2.0 * contact.drag_time(t_vis) * contact.e_star() * self.a_eq * self.t0
-                / contact.m_star(),
+            lambda: d.c_a,
+            c_d: d.c_d,
             // F_c = lambda within [1, SPEED_CAP]: see crate::model, "Pseudo-time"
-            speed_cap: (contact.crack_speed_unit(t_vis) * self.t0 / self.a_eq)
-                .clamp(1.0, crate::model::SPEED_CAP),
+            speed_cap: d.c_a.clamp(1.0, crate::model::SPEED_CAP),
         }
     }
 }

@@ -25,6 +25,18 @@ pub enum ThresholdsError {
         /// Relaxation time (s).
         t_vis: f64,
     },
+    /// The search did not close its brackets within [`crate::search::MAX_COLLISIONS`]
+    /// collisions (a safeguard: searches take 20-100).
+    #[error(
+        "the threshold search at T_vis = {} s did not converge within {collisions} collisions",
+        number(*t_vis)
+    )]
+    NotConverged {
+        /// Relaxation time (s).
+        t_vis: f64,
+        /// Collisions integrated.
+        collisions: usize,
+    },
     /// A measured V_stick at or below V_stick,JKR: no relaxation time reproduces it, since
     /// V_stick > V_stick,JKR for every T_vis > 0 (Section 5.1).
     #[error(

@@ -35,6 +35,11 @@ use dynamics::{Collider, Outcome, Rebound};
 use greenwood::CrackLaw;
 use v_out::StickState;
 
+/// The most collisions one search integrates before it gives up with
+/// [`ThresholdsError::NotConverged`]: a safeguard against a search that stops narrowing its
+/// brackets; searches take 20-100 (`StickingThresholds::collisions`).
+pub const MAX_COLLISIONS: usize = 1000;
+
 /// One classified impact speed.
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Seen {
@@ -215,6 +220,12 @@ impl<'a> Search<'a> {
 
     /// Integrates impact speeds, each on its rung, two at a time (concurrently when asked).
     fn round(&mut self, jobs: &[(f64, usize)]) -> Result<(), ThresholdsError> {
+        if self.seen.len() >= MAX_COLLISIONS {
+            return Err(ThresholdsError::NotConverged {
+                t_vis: self.t_vis(),
+                collisions: self.seen.len(),
+            });
+        }
         let jobs: Vec<(f64, usize, Option<Rebound>)> = jobs
             .iter()
             .map(|&(v, rung)| (v, rung, self.restart_from(v, rung)))

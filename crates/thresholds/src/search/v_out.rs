@@ -216,7 +216,9 @@ impl Search<'_> {
                     if above >= hi.v {
                         above = 0.5 * (a.max(lo.v) + hi.v);
                     }
-                    if below < above {
+                    // both inside the bracket, or the pair would not narrow it (the two zeros
+                    // can both lie below a sticking lower end when V_out is steep there)
+                    if lo.v < below && below < above && above < hi.v {
                         return vec![(below, tight), (above, tight)];
                     }
                 }
