@@ -6,6 +6,7 @@
 //! parameter grids of each figure, the CSV format and the pictures.
 
 pub mod figures;
+pub mod master_table;
 pub mod table;
 pub mod test;
 

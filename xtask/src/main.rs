@@ -28,6 +28,14 @@ enum Command {
         #[arg(long)]
         check: bool,
     },
+    /// Build the master tables of V_stick / V_stick,JKR over the two dimensionless numbers with
+    /// the exact search (about 10 minutes on 2 cores) and write crates/thresholds/data/master_k*.csv.
+    MasterTable {
+        /// Recompute a sample of the committed tables' nodes instead, and fail if the model no
+        /// longer gives them.
+        #[arg(long)]
+        check: bool,
+    },
     /// Run every test: `cargo test --workspace`, then the Python package in a virtual
     /// environment under target/venv (built from crates/python) with pytest.
     Test {
@@ -44,6 +52,13 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Figures { check } => run_figures(check),
+        Command::MasterTable { check } => {
+            if check {
+                xtask::master_table::run_check()
+            } else {
+                xtask::master_table::run_build(&workspace_root())
+            }
+        }
         Command::Test {
             rust_only,
             python_only,

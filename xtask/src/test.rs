@@ -1,7 +1,8 @@
 //! `cargo xtask test`: every test of the project, Rust and Python, in one command on a fresh
 //! machine.
 //!
-//! 1. `cargo test --workspace` (which also builds the `stickiness` binary);
+//! 1. `cargo test --workspace` (which also builds the `stickiness` binary), then
+//!    `cargo xtask master-table --check` (a sample of the master tables' nodes recomputed);
 //! 2. a virtual environment under `target/venv` with the Python test dependencies;
 //! 3. the package built from `crates/python` (`pip install ./crates/python`, maturin on the
 //!    workspace's opt-level-3 dev profile, so it reuses the build of step 1);
@@ -120,6 +121,9 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
         run(Command::new(&cargo)
             .current_dir(root)
             .args(["test", "--workspace"]))?;
+        // a change of the model must not leave the committed master tables stale
+        eprintln!("+ cargo xtask master-table --check");
+        crate::master_table::run_check()?;
     }
     if !parts.python {
         return Ok(());

@@ -35,7 +35,9 @@ fn csv_files_are_plain() {
         n += 1;
         let text = std::fs::read_to_string(&path).expect("readable");
         assert!(
-            text.starts_with("# Figure") || text.starts_with("# Sphere on a wall"),
+            text.starts_with("# Figure")
+                || text.starts_with("# Sphere on a wall")
+                || text.starts_with("# Master figure"),
             "{}",
             path.display()
         );
@@ -55,5 +57,5 @@ fn csv_files_are_plain() {
         }
         assert!(!t.rows.is_empty());
     }
-    assert_eq!(n, 9, "nine figure files");
+    assert_eq!(n, 11, "eleven figure files");
 }

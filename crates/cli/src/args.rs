@@ -329,16 +329,50 @@ pub struct SearchArgs {
     /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; at most 10000.0).
     #[arg(long, allow_hyphen_values = true)]
     pub v_max: Option<f64>,
+    #[command(flatten)]
+    pub method: MethodArg,
+}
+
+/// How thresholds are answered: the exact search, or the master table where it vouches for its
+/// accuracy (microseconds instead of milliseconds).
+#[derive(Debug, Clone, Args)]
+pub struct MethodArg {
+    /// search: the exact search (20-100 collisions); table: the master table of V_stick /
+    /// V_stick,JKR over the two dimensionless numbers, within 1e-5 of the search where it vouches
+    /// for its accuracy, the search elsewhere ("method" in the output says which answered).
+    #[arg(long, value_enum, ignore_case = true, default_value = "search")]
+    pub method: MethodName,
+}
+
+/// The values of `--method`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum MethodName {
+    /// The exact search.
+    Search,
+    /// The master table, the search where it does not vouch.
+    Table,
+}
+
+impl From<MethodName> for thresholds::ThresholdMethod {
+    fn from(m: MethodName) -> Self {
+        match m {
+            MethodName::Search => Self::Search,
+            MethodName::Table => Self::Table,
+        }
+    }
 }
 
 impl SearchArgs {
     /// The library's search options, recorded in `setup`'s inputs (the command records the
     /// `v_max` it searched up to).
     pub fn options(&self, setup: &mut Setup) -> thresholds::SearchOptions {
+        let method = thresholds::ThresholdMethod::from(self.method.method);
         setup.with_input("rel_tol", self.rel_tol);
+        setup.with_input("method", method.name());
         thresholds::SearchOptions {
             rel_tol: self.rel_tol,
             v_max: self.v_max,
+            method,
             ..Default::default()
         }
     }

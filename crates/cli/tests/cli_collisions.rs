@@ -146,3 +146,28 @@ fn tabor_warning_for_small_grains() {
     let j = json_of("jkr --json");
     assert_eq!(j["warnings"].as_array().map(Vec::len), Some(0));
 }
+
+/// `--method table`: the master table answers within 1e-5 of the exact search (Section 4.4's
+/// CO2 case), the JSON echoes the choice in "input" and says in "method" which path answered;
+/// beyond the no-bouncing cliff (T_vis = 1e-6 s) the search answers, and says so.
+#[test]
+fn method_table_answers_and_says_so() {
+    let s = json_of("v-stick --t-vis 1e-9 --json");
+    let t = json_of("v-stick --t-vis 1e-9 --method table --json");
+    assert_eq!(
+        (s["method"].as_str(), t["method"].as_str()),
+        (Some("search"), Some("table"))
+    );
+    assert_eq!(t["input"]["method"].as_str(), Some("table"));
+    for key in ["v_stick", "v_double_onset"] {
+        let (a, b) = (s[key].as_f64().unwrap(), t[key].as_f64().unwrap());
+        assert!((a / b - 1.0).abs() < 1e-5, "{key}: {a} vs {b}");
+    }
+    let far = json_of("v-stick --t-vis 1e-6 --method table --json");
+    assert_eq!(far["method"].as_str(), Some("search"));
+    assert!(far["v_stick"].is_null());
+    let fit = json_of("fit-t-vis --v-stick 0.04 --v-stick-err 0.02 --method table --json");
+    assert_eq!(fit["method"].as_str(), Some("table"));
+    let frag = json_of("v-frag --radius 1e-7 --t-vis-law co2 --method table --json");
+    assert_eq!(frag["method"].as_str(), Some("table"));
+}

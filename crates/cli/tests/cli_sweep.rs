@@ -272,3 +272,14 @@ fn progress_lines_when_not_a_terminal() {
     assert_eq!(code, 0);
     assert!(err.contains("sweep: 12/12 rows (100.0 %)"), "{err}");
 }
+
+/// `sweep --method table` fills the method column with the path that answered each row.
+#[test]
+fn method_column() {
+    let d = dir("method");
+    let out = d.join("s.csv");
+    let (code, _, err) = sweep(&["--t-vis", "1e-10,1e-9,1e-6", "--method", "table"], &out);
+    assert_eq!(code, 0, "{err}");
+    let methods: Vec<String> = rows(&out).iter().map(|r| r["method"].clone()).collect();
+    assert_eq!(methods, ["table", "table", "search"]);
+}

@@ -1,7 +1,8 @@
 //! V_stick searches (both transitions, relative tolerance 1e-6) for the three reference cases of
 //! the Speed issue, one of them with its crack-law table (as a Python call does), and a
-//! Figure-4-like sweep (2 k x 11 T_vis, each search seeded by its neighbour).
-//! `cargo bench -p thresholds`.
+//! Figure-4-like sweep (2 k x 11 T_vis, each search seeded by its neighbour); and the same
+//! thresholds from the master table (`v_stick_table/*`, `ThresholdMethod::Table`), with and
+//! without building the contact. `cargo bench -p thresholds`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
@@ -9,7 +10,7 @@ use contact::{Contact, Geometry, Material};
 use criterion::{criterion_group, criterion_main, Criterion};
 use greenwood::CrackLaw;
 use std::hint::black_box;
-use thresholds::{sticking_thresholds, sweep_t_vis, SearchOptions};
+use thresholds::{sticking_thresholds, sweep_t_vis, MasterTable, SearchOptions, ThresholdMethod};
 
 fn v_stick(c: &mut Criterion) {
     let law = CrackLaw::new(0.01).expect("k in range");
@@ -50,5 +51,35 @@ fn v_stick(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, v_stick);
+fn v_stick_table(c: &mut Criterion) {
+    let law = CrackLaw::new(0.01).expect("k in range");
+    let co2 = Contact::new(Material::co2(), Geometry::identical(60e-6)).expect("valid");
+    let h2o = Contact::new(Material::h2o(), Geometry::wall(90e-6)).expect("valid");
+    let opts = SearchOptions {
+        method: ThresholdMethod::Table,
+        ..SearchOptions::default()
+    };
+    // parse the embedded table before timing
+    assert!(MasterTable::standard(0.01).is_some());
+    let mut group = c.benchmark_group("v_stick_table");
+    for (name, contact, t_vis) in [
+        ("co2_60um_1e-9", co2, 1e-9),
+        ("co2_60um_1e-14", co2, 1e-14),
+        ("h2o_90um_wall_1e-9", h2o, 1e-9),
+    ] {
+        group.bench_function(name, |b| {
+            b.iter(|| sticking_thresholds(&contact, &law, black_box(t_vis), &opts))
+        });
+    }
+    // what an array element from Python does: the contact of its radius, then the table
+    group.bench_function("co2_with_contact", |b| {
+        b.iter(|| {
+            let c = Contact::new(Material::co2(), Geometry::identical(black_box(60e-6)));
+            sticking_thresholds(&c.expect("valid"), &law, black_box(1e-9), &opts)
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, v_stick, v_stick_table);
 criterion_main!(benches);

@@ -5,12 +5,15 @@
 //! and found with the Illinois root finder of `numerics::roots`. A measured value at or below
 //! V_stick,JKR is reached by no T_vis > 0 ([`ThresholdsError::BelowJkr`]).
 
-use crate::stick::{sticking_thresholds, SearchOptions, DEFAULT_V_MAX_OVER_JKR, V_SEARCH_LIMIT};
+use crate::stick::{
+    sticking_thresholds, SearchOptions, ThresholdMethod, DEFAULT_V_MAX_OVER_JKR, V_SEARCH_LIMIT,
+};
 use crate::ThresholdsError;
 use contact::Contact;
 use greenwood::CrackLaw;
 use numerics::roots::{illinois, Illinois};
 use numerics::{format::number, OutOfRange};
+use std::cell::Cell;
 
 /// Relative tolerance of the fitted T_vis (dimensionless): far below the uncertainty of any
 /// measured V_stick, and 1e-5 in T_vis moves V_stick by at most ~1e-4 (d ln V/d ln T < 13).
@@ -47,6 +50,9 @@ pub struct TVisFit {
     pub v_stick_err: f64,
     /// The search limit given for the fit ([`SearchOptions::v_max`], m/s), if any.
     pub v_max: Option<f64>,
+    /// Which answered: [`ThresholdMethod::Table`] when the master table gave every V_stick the
+    /// fit needed, else [`ThresholdMethod::Search`].
+    pub method: ThresholdMethod,
 }
 
 /// A fit that is valid but should be read with care.
@@ -168,6 +174,17 @@ pub fn t_vis_for_v_stick(
     v_target: f64,
     opts: &SearchOptions,
 ) -> Result<f64, ThresholdsError> {
+    solve(contact, law, v_target, opts, &Cell::new(false))
+}
+
+/// [`t_vis_for_v_stick`], setting `searched` when the exact search answered a trial.
+fn solve(
+    contact: &Contact,
+    law: &CrackLaw,
+    v_target: f64,
+    opts: &SearchOptions,
+    searched: &Cell<bool>,
+) -> Result<f64, ThresholdsError> {
     check_v_stick(v_target)?;
     let v_stick_jkr = contact.v_stick_jkr();
     if v_target <= v_stick_jkr {
@@ -188,6 +205,9 @@ pub fn t_vis_for_v_stick(
     // f(u) = ln V_stick(e^u) - ln v_target; "no bouncing below v_max" means V_stick > v_target.
     let f = |u: f64| -> Result<f64, ThresholdsError> {
         let th = sticking_thresholds(contact, law, u.exp(), &opts)?;
+        if th.method == ThresholdMethod::Search {
+            searched.set(true);
+        }
         Ok(th.v_stick.map_or(f64::INFINITY, |v| (v / v_target).ln()))
     };
     let (floor, ceiling) = (T_VIS_FLOOR.ln(), T_VIS_CEILING.ln());
@@ -261,7 +281,8 @@ pub fn fit_t_vis(
         )
         .into());
     }
-    let t_vis = t_vis_for_v_stick(contact, law, v_stick, opts)?;
+    let searched = Cell::new(opts.method == ThresholdMethod::Search);
+    let t_vis = solve(contact, law, v_stick, opts, &searched)?;
     let (t_vis_min, t_vis_max) = if v_stick_err == 0.0 {
         (t_vis, t_vis)
     } else {
@@ -269,11 +290,11 @@ pub fn fit_t_vis(
         let t_vis_min = if low <= contact.v_stick_jkr() {
             0.0
         } else {
-            t_vis_for_v_stick(contact, law, low, opts)?
+            solve(contact, law, low, opts, &searched)?
         };
         (
             t_vis_min,
-            t_vis_for_v_stick(contact, law, v_stick + v_stick_err, opts)?,
+            solve(contact, law, v_stick + v_stick_err, opts, &searched)?,
         )
     };
     Ok(TVisFit {
@@ -284,5 +305,10 @@ pub fn fit_t_vis(
         v_stick,
         v_stick_err,
         v_max: opts.v_max,
+        method: if searched.get() {
+            ThresholdMethod::Search
+        } else {
+            ThresholdMethod::Table
+        },
     })
 }

@@ -38,6 +38,8 @@ pub struct Fragmentation {
     pub v_stick_jkr: f64,
     /// Highest speed searched when no collision bounced (m/s), else `None`.
     pub no_bouncing_below: Option<f64>,
+    /// Which answered: the exact search or the master table.
+    pub method: crate::ThresholdMethod,
 }
 
 /// V_frag = 10 V_stick of aggregates of the monomers of `contact` at relaxation time `t_vis`
@@ -57,6 +59,7 @@ pub fn fragmentation(
         v_frag_jkr: v_frag(th.v_stick_jkr),
         v_stick_jkr: th.v_stick_jkr,
         no_bouncing_below: th.no_bouncing_below(),
+        method: th.method,
     })
 }
 

@@ -48,6 +48,7 @@
 pub mod error;
 pub mod fit;
 pub mod laws;
+pub mod master;
 pub mod paper;
 pub mod search;
 pub mod stick;
@@ -62,6 +63,7 @@ pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, FitWarning, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
 pub use greenwood::{CrackLaw, GreenwoodError};
 pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
+pub use master::{MasterTable, Ratios};
 pub use numerics::OutOfRange;
 /// Default radius R1 (m) of the CLI and the Python package: the typical CO2 grain of Musiolik et
 /// al. (2016a), [`paper::MUSIOLIK_2016A`].
@@ -71,5 +73,6 @@ pub const DEFAULT_K: f64 = 0.01;
 
 pub use stick::{
     sticking_thresholds, sweep_t_vis, Hint, HintChain, SearchOptions, StickingThresholds,
-    DEFAULT_REL_TOL, DEFAULT_V_MAX_OVER_JKR, HINT_NEIGHBOURS, HINT_SPREAD_ONE, V_SEARCH_LIMIT,
+    ThresholdMethod, DEFAULT_REL_TOL, DEFAULT_V_MAX_OVER_JKR, HINT_NEIGHBOURS, HINT_SPREAD_ONE,
+    V_SEARCH_LIMIT,
 };

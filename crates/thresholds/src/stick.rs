@@ -48,6 +48,7 @@ fn thresholds_from(search: &Search) -> StickingThresholds {
         v_max: search.v_max,
         collisions: search.seen.len(),
         steps: search.steps,
+        method: ThresholdMethod::Search,
     }
 }
 
@@ -80,6 +81,37 @@ pub const DEFAULT_V_MAX_OVER_JKR: f64 = 1e3;
 /// `--rel-tol` and Python's `rel_tol`.
 pub const DEFAULT_REL_TOL: f64 = 1e-6;
 
+/// How a threshold is answered.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum ThresholdMethod {
+    /// The exact search: 20-100 collisions, milliseconds (the default).
+    #[default]
+    Search,
+    /// The master table ([`crate::MasterTable`]): microseconds, within 1e-5 of the search
+    /// where it vouches for its accuracy; elsewhere (near the cliff, outside its domain, a k
+    /// other than 0.01 and 0.02) the exact search answers, and the result says so.
+    Table,
+}
+
+impl ThresholdMethod {
+    /// `search` or `table`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            ThresholdMethod::Search => "search",
+            ThresholdMethod::Table => "table",
+        }
+    }
+
+    /// The method by name: `search` or `table` (any case).
+    pub fn from_name(name: &str) -> Option<Self> {
+        match name.to_ascii_lowercase().as_str() {
+            "search" => Some(ThresholdMethod::Search),
+            "table" => Some(ThresholdMethod::Table),
+            _ => None,
+        }
+    }
+}
+
 /// Settings of a threshold search.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct SearchOptions {
@@ -105,6 +137,9 @@ pub struct SearchOptions {
     /// final bracket) by less than that bracket (`docs/performance.md`, "Rebound restarts" and
     /// "Accuracy"). Default on; off for a reference.
     pub restarts: bool,
+    /// How to answer: the exact search (default) or the master table where it vouches for its
+    /// accuracy ([`ThresholdMethod`]).
+    pub method: ThresholdMethod,
 }
 
 impl SearchOptions {
@@ -184,6 +219,7 @@ impl Default for SearchOptions {
             parallel: true,
             hint: None,
             restarts: true,
+            method: ThresholdMethod::Search,
         }
     }
 }
@@ -206,6 +242,8 @@ pub struct StickingThresholds {
     pub collisions: usize,
     /// Solver steps over all collisions (the cost of the search).
     pub steps: usize,
+    /// Which answered: the exact search or the master table.
+    pub method: ThresholdMethod,
 }
 
 impl StickingThresholds {
@@ -225,7 +263,9 @@ impl StickingThresholds {
 ///
 /// Every round integrates two impact speeds, concurrently when [`SearchOptions::parallel`] is set
 /// (two cores halve the wall time); the speeds chosen depend only on the outcomes seen, so the
-/// result is the same either way. How the speeds are chosen: [`crate::search`].
+/// result is the same either way. How the speeds are chosen: [`crate::search`]. With
+/// [`SearchOptions::method`] = [`ThresholdMethod::Table`] the master table answers where it
+/// vouches for its accuracy (the result's `method` says which answered).
 ///
 /// # Example
 /// ```
@@ -264,7 +304,13 @@ pub fn sticking_thresholds(
             v_max: opts.v_max_for(v_jkr),
             collisions: 0,
             steps: 0,
+            method: opts.method,
         });
+    }
+    if opts.method == ThresholdMethod::Table {
+        if let Some(th) = crate::master::from_table(contact, law, t_vis, opts) {
+            return Ok(th);
+        }
     }
     let mut search = Search::new(contact, law, t_vis, opts)?;
     search.run()?;

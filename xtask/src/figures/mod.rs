@@ -13,6 +13,7 @@ pub mod fig4;
 pub mod fig5;
 pub mod fig6;
 pub mod fig7;
+pub mod master;
 pub mod wall;
 
 pub use curves::ThresholdCurve;
@@ -23,6 +24,7 @@ pub use fig4::Figure4;
 pub use fig5::Figure5;
 pub use fig6::{Figure6, FittedTVis};
 pub use fig7::{Figure7, SizePoint};
+pub use master::FigureMaster;
 pub use wall::{FigureWall, WALL_GEOMETRIES};
 
 use crate::table::Table;
@@ -139,6 +141,8 @@ pub struct Figures {
     pub fig7: Figure7,
     /// The sphere-on-wall figure.
     pub wall: FigureWall,
+    /// The master figure: V_stick / V_stick,JKR over the two dimensionless numbers.
+    pub master: FigureMaster,
 }
 
 impl Figures {
@@ -153,6 +157,7 @@ impl Figures {
             fig6: Figure6::compute(res, progress)?,
             fig7: Figure7::compute(res, progress)?,
             wall: FigureWall::compute(res, progress)?,
+            master: FigureMaster::compute(res, progress)?,
         })
     }
 
@@ -167,11 +172,13 @@ impl Figures {
             self.fig6.to_tables(),
             self.fig7.to_tables(),
             self.wall.to_tables(),
+            self.master.to_tables(),
         ]
         .concat()
     }
 
-    /// Draws every figure into `dir` as `fig1.svg` ... `fig7.svg` and `fig_wall.svg`.
+    /// Draws every figure into `dir` as `fig1.svg` ... `fig7.svg`, `fig_wall.svg` and
+    /// `fig_master.svg`.
     pub fn draw_all(&self, dir: &Path) -> Result<(), Error> {
         std::fs::create_dir_all(dir)?;
         self.fig1.draw(&dir.join("fig1.svg"))?;
@@ -182,6 +189,7 @@ impl Figures {
         self.fig6.draw(&dir.join("fig6.svg"))?;
         self.fig7.draw(&dir.join("fig7.svg"))?;
         self.wall.draw(&dir.join("fig_wall.svg"))?;
+        self.master.draw(&dir.join("fig_master.svg"))?;
         Ok(())
     }
 }

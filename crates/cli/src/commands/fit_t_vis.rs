@@ -50,6 +50,7 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
     r.number("t_vis_min", fit.t_vis_min, "s")?;
     r.number("t_vis_max", fit.t_vis_max, "s")?;
     r.number("v_stick_jkr", fit.v_stick_jkr, "m/s")?;
+    r.text("method", fit.method.name());
     r.input(setup.input);
     Ok(r)
 }

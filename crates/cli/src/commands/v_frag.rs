@@ -34,6 +34,7 @@ pub fn run(args: &VFragArgs) -> Result<Report, CliError> {
     r.number("v_frag_jkr", f.v_frag_jkr, "m/s")?;
     r.number("v_stick_jkr", f.v_stick_jkr, "m/s")?;
     no_bouncing_below(&mut r, f.v_stick, v_max);
+    r.text("method", f.method.name());
     r.input(setup.input);
     Ok(r)
 }

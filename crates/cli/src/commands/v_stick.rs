@@ -35,6 +35,7 @@ pub fn run(args: &VStickArgs) -> Result<Report, CliError> {
     )?;
     r.number("v_stick_jkr", th.v_stick_jkr, "m/s")?;
     no_bouncing_below(&mut r, th.v_stick, th.v_max);
+    r.text("method", th.method.name());
     r.input(setup.input);
     Ok(r)
 }

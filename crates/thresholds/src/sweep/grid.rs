@@ -315,6 +315,7 @@ impl Chunk {
                 v_frag: th.v_stick.map(v_frag),
                 no_bouncing_below: th.no_bouncing_below(),
                 warnings: contact.warnings().iter().map(|w| w.to_string()).collect(),
+                method: th.method,
             };
             chain.push(p.t_vis, th.as_hint());
             done(&row);

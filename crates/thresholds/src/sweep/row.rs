@@ -29,10 +29,12 @@ pub struct Row {
     pub no_bouncing_below: Option<f64>,
     /// The model's warnings for this point.
     pub warnings: Vec<String>,
+    /// Which answered: the exact search or the master table.
+    pub method: crate::ThresholdMethod,
 }
 
 /// The columns of a sweep's rows, in order: the inputs, then the results.
-pub const COLUMNS: [&str; 16] = [
+pub const COLUMNS: [&str; 17] = [
     "material",
     "gamma_sv",
     "young",
@@ -48,6 +50,7 @@ pub const COLUMNS: [&str; 16] = [
     "v_stick_jkr",
     "v_frag",
     "no_bouncing_below",
+    "method",
     "warnings",
 ];
 
@@ -158,6 +161,7 @@ impl Row {
             n(self.v_stick_jkr),
             Cell::Number(self.v_frag),
             Cell::Number(self.no_bouncing_below),
+            Cell::Text(self.method.name().to_string()),
             Cell::List(self.warnings.clone()),
         ]
     }

@@ -1,7 +1,7 @@
 //! The flags of `stickiness sweep` and what they determine: the grid, the search options and
 //! the header that identifies the sweep in its file.
 
-use crate::args::{BulkOverrides, Overrides};
+use crate::args::{BulkOverrides, MethodArg, MethodName, Overrides};
 use crate::error::CliError;
 use clap::{Args, ValueEnum};
 use numerics::format::number;
@@ -63,6 +63,8 @@ pub struct SweepArgs {
     /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; at most 10000.0).
     #[arg(long, allow_hyphen_values = true)]
     pub v_max: Option<f64>,
+    #[command(flatten)]
+    pub method: MethodArg,
     /// The output file.
     #[arg(long, value_name = "FILE.csv")]
     pub out: PathBuf,
@@ -131,6 +133,7 @@ impl SweepArgs {
         let options = SearchOptions {
             rel_tol: self.rel_tol,
             v_max: self.v_max,
+            method: self.method.method.into(),
             ..SearchOptions::default()
         };
         options.validate()?;
@@ -163,6 +166,10 @@ impl SweepArgs {
         command.push(format!("--rel-tol {}", number(self.rel_tol)));
         if let Some(v) = self.v_max {
             command.push(format!("--v-max {}", number(v)));
+        }
+        // the default (search) is left out, so that the header of a default sweep is unchanged
+        if self.method.method == MethodName::Table {
+            command.push("--method table".into());
         }
         let format: thresholds::sweep::Format = self.format.into();
         command.push(format!("--format {}", format.name()));
