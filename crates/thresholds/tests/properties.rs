@@ -42,3 +42,20 @@ proptest! {
         }
     }
 }
+
+/// Near the no-bouncing cliff (CO2 grains of 1.46 um at T_vis = 2.2e-10 s, V_stick about 410
+/// V_stick,JKR) the coarse tolerances misplace the onset by 3e-3; the search still closes
+/// (it had run past 1000 collisions), and single collisions confirm its thresholds.
+#[test]
+fn the_search_closes_near_the_cliff() {
+    let c = Contact::new(Material::co2(), Geometry::identical(1.4565341716423927e-6)).unwrap();
+    let law = CrackLaw::new(0.01).unwrap();
+    let t_vis = 2.201629262225769e-10;
+    let th = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
+    let (vd, vs) = (th.v_double_onset.unwrap(), th.v_stick.unwrap());
+    assert!(th.collisions < 200, "{} collisions", th.collisions);
+    let collider = Collider::new(c, &law, t_vis).unwrap();
+    let outcome = |v: f64| collider.collide(v).unwrap().outcome;
+    assert_eq!(outcome(vd * (1.0 - MARGIN)), Outcome::Sticking);
+    assert_eq!(outcome(vs * (1.0 + MARGIN)), Outcome::Bouncing);
+}

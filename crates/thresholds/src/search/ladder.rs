@@ -81,8 +81,9 @@ impl Search<'_> {
     /// The coarsest rung fit to classify speeds inside a bracket of relative width `width`:
     /// one whose shift is below `width` by [`LADDER_MARGIN`] and whose tolerance is coarser
     /// than the search's own; the search's own otherwise.
+    /// Never a rung this search found unreliable ([`super::min_rung`]).
     pub(crate) fn rung_for(&self, width: f64) -> usize {
-        rung_for(width, self.opts.solver.rtol)
+        rung_for(width, self.opts.solver.rtol).max(super::min_rung(&self.seen))
     }
 }
 

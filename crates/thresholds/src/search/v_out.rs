@@ -133,7 +133,10 @@ impl Search<'_> {
         let (Some(lo), Some(hi)) = self.bracket(Transition::Stick) else {
             return None;
         };
-        let coarse = self.rung_for((hi.v - lo.v) / hi.v).min(SECANT_RUNG);
+        let coarse = self
+            .rung_for((hi.v - lo.v) / hi.v)
+            .min(SECANT_RUNG)
+            .max(super::min_rung(&self.seen));
         // ends from that rung or finer once they bracket V_stick: a coarser end may be
         // misclassified within its rung's shift, and would keep the secant root out
         let (lo, hi) = match self.bracket_from(coarse, Transition::Stick) {
