@@ -3,7 +3,7 @@
 
 use crate::{ContactError, Geometry, Material};
 use numerics::format::number;
-use numerics::positive;
+use numerics::{positive, OutOfRange};
 use std::f64::consts::PI;
 
 /// The JKR quantities of a contact as `(name, SI unit)`, in the order the CLI's `jkr` and
@@ -151,11 +151,29 @@ impl Contact {
     pub fn new(material: Material, geometry: Geometry) -> Result<Self, ContactError> {
         material.validate()?;
         geometry.validate()?;
-        Ok(Self {
+        let contact = Self {
             material,
             geometry,
             epsilon: SURFACE_FORCE_RANGE,
-        })
+        };
+        // valid constants can still be too far out for f64 (a radius of 1e300 m has an
+        // infinite mass): refuse them here rather than let a search run on infinities
+        let units = [
+            contact.m_star(),
+            contact.a_eq(),
+            contact.t0(),
+            contact.v_stick_jkr(),
+        ];
+        if !units.iter().all(|u| u.is_finite() && *u > 0.0) {
+            return Err(OutOfRange::new(
+                "radius",
+                geometry.r1(),
+                "such that, with this material, the mass and the JKR units of the contact are finite and > 0",
+                "m",
+            )
+            .into());
+        }
+        Ok(contact)
     }
 
     /// The same contact with another surface-force range epsilon (m, > 0).

@@ -143,3 +143,16 @@ fn implausible_radius_warns() {
     assert!(Warning::for_speed("v_in", 2e3).is_some());
     assert!(Warning::for_speed("v_in", 20.0).is_none());
 }
+
+/// Valid constants can still overflow: a radius of 1e300 m has an infinite mass, which no
+/// formula survives; it is bad input naming the radius, not a contact with infinities.
+#[test]
+fn radii_beyond_f64_are_refused() {
+    let e = Contact::new(Material::co2(), Geometry::identical(1e300)).unwrap_err();
+    assert!(
+        e.to_string()
+            .starts_with("radius = 1e+300: must be such that"),
+        "{e}"
+    );
+    assert!(Contact::new(Material::co2(), Geometry::identical(1e2)).is_ok());
+}

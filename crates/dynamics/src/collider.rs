@@ -18,6 +18,12 @@ use numerics::OutOfRange;
 /// The fiducial eps = 0.01 of Section 2.6 (start at beta = (1 + eps) k, end at (1 - eps)/k).
 pub const EPS: f64 = 0.01;
 
+/// The largest crack-speed number c_a (lambda) a collision is integrated at: at 1.5e10 a
+/// collision of 1 cm grains takes 2e5 steps, at 1.5e11 it does not end within the step budget
+/// of 2e6 (the crack must follow beta = 1 to 1e-11); V_stick has converged there to its
+/// T_vis -> 0 limit within 2e-7 (`thresholds::MasterTable` clamps c_a at 1e8).
+pub const MAX_CRACK_SPEED_NUMBER: f64 = 3e10;
+
 /// Integrates collisions of one contact at one relaxation time.
 ///
 /// It owns its crack law: build the [`CrackLaw`] once per k and pass it (or a reference: the
@@ -56,6 +62,21 @@ impl Collider {
         let law = law.into();
         let scales = Scales::new(&contact);
         let params = scales.params(&contact, t_vis);
+        if !(params.lambda <= MAX_CRACK_SPEED_NUMBER && params.c_d.is_finite()) {
+            // the smallest T_vis these grains can be integrated at (c_a ~ 1/T_vis)
+            let t_min = t_vis * params.lambda / MAX_CRACK_SPEED_NUMBER;
+            return Err(OutOfRange::new(
+                "t_vis",
+                t_vis,
+                format!(
+                    ">= {} s for these grains: below it the crack-speed number c_a exceeds {:e} and the collision cannot be integrated (V_stick has reached its T_vis -> 0 limit there to about 1e-6; the master table answers below it)",
+                    numerics::format::number(t_min),
+                    MAX_CRACK_SPEED_NUMBER
+                ),
+                "s",
+            )
+            .into());
+        }
         let mut c = Self {
             contact,
             law,

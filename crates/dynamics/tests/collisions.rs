@@ -424,3 +424,24 @@ fn backends_agree() {
         );
     }
 }
+
+/// Below the T_vis where the crack-speed number exceeds MAX_CRACK_SPEED_NUMBER (1 cm grains of
+/// a stiff ice at 1e-16 s: c_a = 1.5e11) a collision cannot be integrated within the step
+/// budget; the collider refuses it as bad input naming t_vis and the smallest T_vis it takes,
+/// and takes that one.
+#[test]
+fn crack_speeds_beyond_the_limit_are_refused() {
+    let m = Material {
+        gamma_sv: 0.01,
+        young: 2e11,
+        poisson: 0.45,
+        density: 1e4,
+    };
+    let c = Contact::new(m, Geometry::wall(1e-2)).unwrap();
+    let law = CrackLaw::new(0.01).unwrap();
+    let e = Collider::new(c, &law, 1e-16).unwrap_err();
+    let bad = e.out_of_range().expect("bad input").clone();
+    assert_eq!(bad.field, "t_vis");
+    let t_min = 1e-16 * c.dimensionless(1e-16).c_a / dynamics::MAX_CRACK_SPEED_NUMBER;
+    assert!(Collider::new(c, &law, t_min * 1.001).is_ok());
+}

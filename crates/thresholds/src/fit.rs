@@ -222,7 +222,15 @@ fn solve(
                 // V_stick is within rounding of V_stick,JKR: the target is at the JKR limit
                 return Ok(lo.exp());
             }
-            f_lo = f(lo)?;
+            f_lo = match f(lo) {
+                Ok(v) => v,
+                // below the T_vis that can be integrated (dynamics::MAX_CRACK_SPEED_NUMBER),
+                // V_stick has reached the JKR limit: the target lies there
+                Err(e) if e.out_of_range().is_some_and(|o| o.field == "t_vis") => {
+                    return Ok(lo.exp())
+                }
+                Err(e) => return Err(e),
+            };
         }
     } else {
         while f_hi <= 0.0 {
