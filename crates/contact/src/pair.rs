@@ -157,23 +157,33 @@ impl Contact {
             epsilon: SURFACE_FORCE_RANGE,
         };
         // valid constants can still be too far out for f64 (a radius of 1e300 m has an
-        // infinite mass): refuse them here rather than let a search run on infinities
-        let units = [
-            contact.m_star(),
-            contact.a_eq(),
-            contact.t0(),
-            contact.v_stick_jkr(),
-        ];
-        if !units.iter().all(|u| u.is_finite() && *u > 0.0) {
+        // infinite mass): refuse them here rather than let a search run on infinities, naming
+        // the radius at fault (R2 if R1 alone, as identical spheres, is fine)
+        if !contact.units_finite() {
+            let alone = Self {
+                geometry: Geometry::identical(geometry.r1()),
+                ..contact
+            };
+            let (name, value) = match geometry.r2() {
+                Some(r2) if alone.units_finite() => ("radius2", r2),
+                _ => ("radius", geometry.r1()),
+            };
             return Err(OutOfRange::new(
-                "radius",
-                geometry.r1(),
+                name,
+                value,
                 "such that, with this material, the mass and the JKR units of the contact are finite and > 0",
                 "m",
             )
             .into());
         }
         Ok(contact)
+    }
+
+    /// Whether the reduced mass and the JKR units (a_eq, t0, V_stick,JKR) are finite and > 0.
+    fn units_finite(&self) -> bool {
+        [self.m_star(), self.a_eq(), self.t0(), self.v_stick_jkr()]
+            .iter()
+            .all(|u| u.is_finite() && *u > 0.0)
     }
 
     /// The same contact with another surface-force range epsilon (m, > 0).
