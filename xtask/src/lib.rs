@@ -7,8 +7,10 @@
 
 pub mod figures;
 pub mod master_table;
+pub mod python;
 pub mod table;
 pub mod test;
+pub mod wheel;
 
 /// Significant figures written to the CSV files.
 pub const CSV_DIGITS: usize = 10;

@@ -36,6 +36,14 @@ enum Command {
         #[arg(long)]
         check: bool,
     },
+    /// Build the Python package's wheel (maturin, PyO3's stable ABI: one wheel for every
+    /// CPython 3.9 or newer on this platform, checked for manylinux compliance) into
+    /// target/wheels/ and print its path.
+    Wheel {
+        /// The cargo profile: release (for distribution) or dev (opt-level 3, shares the build).
+        #[arg(long, default_value = "release")]
+        profile: String,
+    },
     /// Run every test: `cargo test --workspace`, then the Python package in a virtual
     /// environment under target/venv (built from crates/python) with pytest.
     Test {
@@ -52,6 +60,9 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Figures { check } => run_figures(check),
+        Command::Wheel { profile } => xtask::wheel::build(&workspace_root(), &profile).map(|w| {
+            println!("{}", w.display());
+        }),
         Command::MasterTable { check } => {
             if check {
                 xtask::master_table::run_check()

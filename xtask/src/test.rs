@@ -4,16 +4,20 @@
 //! 1. `cargo test --workspace` (which also builds the `stickiness` binary), then
 //!    `cargo xtask master-table --check` (a sample of the master tables' nodes recomputed);
 //! 2. a virtual environment under `target/venv` with the Python test dependencies;
-//! 3. the package built from `crates/python` (`pip install ./crates/python`, maturin on the
-//!    workspace's opt-level-3 dev profile, so it reuses the build of step 1);
+//! 3. the package as users install it: its wheel (`cargo xtask wheel`, here on the workspace's
+//!    opt-level-3 dev profile, so that it reuses the build of step 1), installed into it;
 //! 4. DustPy for the coupling tests: its PyPI release is a source distribution built with
 //!    meson and f2py, so gfortran is installed first when missing (`apt-get`, as root; otherwise
 //!    the run stops with the command to run);
-//! 5. `pytest crates/python/tests`, with `STICKINESS_CLI` pointing at the binary of step 1.
+//! 5. `pytest crates/python/tests` (with `STICKINESS_CLI` pointing at the binary of step 1 and
+//!    `STICKINESS_WHEEL` at the wheel, which one test installs into a fresh environment without
+//!    Rust; the tutorial notebook runs as a test), then the docstrings' examples
+//!    (`--doctest-modules`).
 //!
 //! It installs what it needs itself and fails loudly on anything missing; it never skips.
 
-use std::path::{Path, PathBuf};
+use crate::python::Venv;
+use std::path::Path;
 use std::process::Command;
 
 /// Any failure of the test run.
@@ -21,13 +25,20 @@ pub type Error = Box<dyn std::error::Error + Send + Sync>;
 
 /// Python packages the tests need (beyond the package itself and its dependency numpy).
 pub const PYTHON_TEST_REQUIREMENTS: &[&str] = &[
-    "maturin>=1.9.4,<2",
+    crate::wheel::MATURIN,
     "numpy>=1.22",
     "pytest>=7",
     "pandas>=1.5",
     "matplotlib>=3.5",
     "mypy>=1.10",
     "dask[distributed]>=2023.1",
+    "hypothesis>=6.80",
+    "astropy>=5.0",
+    "emcee>=3.1",
+    "corner>=2.2",
+    "nbclient>=0.7",
+    "nbformat>=5.7",
+    "ipykernel>=6.0",
 ];
 
 /// The DustPy release the coupling is tested with.
@@ -78,7 +89,7 @@ pub struct Parts {
 }
 
 /// Runs `cmd`, echoing it; an error naming it when it fails.
-fn run(cmd: &mut Command) -> Result<(), Error> {
+pub fn run(cmd: &mut Command) -> Result<(), Error> {
     eprintln!("+ {}", shown(cmd));
     let status = cmd
         .status()
@@ -96,22 +107,6 @@ fn shown(cmd: &Command) -> String {
         .map(|s| s.to_string_lossy().into_owned())
         .collect::<Vec<_>>()
         .join(" ")
-}
-
-/// The Python interpreter to build the environment with: `$PYTHON`, else `python3`.
-fn system_python() -> String {
-    std::env::var("PYTHON").unwrap_or_else(|_| "python3".into())
-}
-
-/// Creates (once) the virtual environment at `venv` and returns its interpreter.
-fn virtual_env(venv: &Path) -> Result<PathBuf, Error> {
-    let python = venv.join("bin").join("python");
-    if !python.is_file() {
-        run(Command::new(system_python()).args(["-m", "venv"]).arg(venv)).map_err(|e| {
-            format!("{e}\nthe Python tests need CPython >= 3.9 with the venv module (Debian: apt-get install python3-venv)")
-        })?;
-    }
-    Ok(python)
 }
 
 /// Runs the requested parts from the workspace `root`.
@@ -132,44 +127,33 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
     run(Command::new(&cargo)
         .current_dir(root)
         .args(["build", "-p", "cli"]))?;
-    let venv = root.join("target").join("venv");
-    let python = virtual_env(&venv)?;
-    // as if activated: maturin's build backend calls `maturin` from PATH
-    let path = std::env::join_paths(std::iter::once(venv.join("bin")).chain(
-        std::env::split_paths(&std::env::var_os("PATH").unwrap_or_default()),
-    ))?;
-    let pip = |args: &[&str]| -> Result<(), Error> {
-        run(Command::new(&python)
-            .current_dir(root)
-            .env("PATH", &path)
-            .args(["-m", "pip", "install", "--disable-pip-version-check", "-q"])
-            .args(args))
-    };
-    pip(PYTHON_TEST_REQUIREMENTS)?;
+    let venv = Venv::open(root)?;
+    venv.pip(root, PYTHON_TEST_REQUIREMENTS)?;
     ensure_gfortran()?;
-    pip(&[DUSTPY])?;
-    // build the package from source on the dev profile (opt-level 3), sharing target/
-    run(Command::new(&python)
-        .current_dir(root)
-        .env("PATH", &path)
-        .env("MATURIN_PEP517_ARGS", "--profile dev")
-        .args([
-            "-m",
-            "pip",
-            "install",
-            "--disable-pip-version-check",
-            "-q",
-            "--no-build-isolation",
-            "--force-reinstall",
-            "--no-deps",
-            "./crates/python",
-        ]))?;
+    venv.pip(root, &[DUSTPY])?;
+    // the package as users install it: the wheel, built on the dev profile (opt-level 3) so
+    // that it shares the build of step 1 (`cargo xtask wheel` builds the release one)
+    let wheel = crate::wheel::build(root, "dev")?;
+    let wheel_arg = wheel.to_string_lossy().into_owned();
+    venv.pip(root, &["--force-reinstall", "--no-deps", &wheel_arg])?;
     let cli = root.join("target").join("debug").join("stickiness");
-    run(Command::new(&python)
-        .current_dir(root)
-        .env("PATH", &path)
+    run(venv
+        .command(root)
         .env("STICKINESS_CLI", &cli)
+        .env("STICKINESS_WHEEL", &wheel)
         .env("MPLBACKEND", "Agg")
         .args(["-m", "pytest", "-q", "crates/python/tests"]))?;
+    // the Examples of every docstring
+    run(venv
+        .command(&root.join("target"))
+        .env("MPLBACKEND", "Agg")
+        .args([
+            "-m",
+            "pytest",
+            "-q",
+            "--doctest-modules",
+            "--pyargs",
+            "stickiness",
+        ]))?;
     Ok(())
 }

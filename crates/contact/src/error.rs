@@ -18,7 +18,7 @@ pub enum ContactError {
         presets: &'static str,
     },
     /// A path to a material file that does not exist.
-    #[error("material file not found: {path}")]
+    #[error("material file not found (or not a file): {path}")]
     MaterialFileNotFound {
         /// The path given.
         path: String,

@@ -171,7 +171,12 @@ impl Contact {
             return Err(OutOfRange::new(
                 name,
                 value,
-                "such that, with this material, the mass and the JKR units of the contact are finite and > 0",
+                format!(
+                    "such that, with this material (gamma_sv = {} J/m^2, young = {} Pa, \
+                     density = {} kg/m^3), the mass and the JKR units of the contact are finite \
+                     and > 0",
+                    material.gamma_sv, material.young, material.density
+                ),
                 "m",
             )
             .into());

@@ -157,7 +157,11 @@ fn radii_beyond_f64_are_refused() {
     assert!(Contact::new(Material::co2(), Geometry::identical(1e2)).is_ok());
     // the message names the radius at fault: a 60 um grain on a tiny second sphere is R2's
     let e = Contact::new(Material::co2(), Geometry::spheres(60e-6, 6e-92)).unwrap_err();
-    assert!(e.to_string().starts_with("radius2 = 6e-92: must be such that"), "{e}");
+    assert!(
+        e.to_string()
+            .starts_with("radius2 = 6e-92: must be such that"),
+        "{e}"
+    );
     let e = Contact::new(Material::co2(), Geometry::spheres(1e300, 1e299)).unwrap_err();
     assert!(e.to_string().starts_with("radius = 1e+300"), "{e}");
 }

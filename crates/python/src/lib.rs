@@ -17,10 +17,12 @@
 //!
 //! All quantities are SI.
 
+mod args;
 mod error;
 mod functions;
 mod material;
 mod parallel;
+mod searches;
 mod sweep;
 
 use pyo3::prelude::*;
@@ -31,9 +33,11 @@ mod _core {
     #[pymodule_export]
     use crate::error::{_InputError, SolverError};
     #[pymodule_export]
-    use crate::functions::{collide, crack_speed, fit_t_vis, jkr, t_vis_law, v_frag, v_stick};
+    use crate::functions::{collide, crack_speed, jkr, t_vis_law};
     #[pymodule_export]
     use crate::material::Material;
+    #[pymodule_export]
+    use crate::searches::{fit_t_vis, v_frag, v_stick};
     #[pymodule_export]
     use crate::sweep::sweep;
 

@@ -1,8 +1,9 @@
 //! `stickiness.Material`: the four SI constants of a grain material.
 
 use crate::error::{value_error, Error};
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::PyType;
+use pyo3::types::{PyBool, PyType};
 use std::path::PathBuf;
 
 /// The four material constants of the model, in SI units.
@@ -19,6 +20,45 @@ pub struct Material {
     pub(crate) inner: thresholds::Material,
 }
 
+/// `value` in SI: a number, or an `astropy.units.Quantity` converted to `unit` (astropy's
+/// spelling; `""` is dimensionless), a quantity of another dimension a `ValueError` naming the
+/// constant and its unit.
+fn si(value: &Bound<'_, PyAny>, name: &str, unit: &str) -> PyResult<f64> {
+    if value.is_instance_of::<PyBool>() {
+        return Err(PyTypeError::new_err(format!(
+            "{name}: expected a number, got a bool"
+        )));
+    }
+    if value.hasattr("unit")? && value.hasattr("to_value")? {
+        let shown = if unit.is_empty() {
+            "dimensionless"
+        } else {
+            unit
+        };
+        return match value.call_method1("to_value", (unit,)) {
+            Ok(v) => v.extract::<f64>().map_err(|_| {
+                PyTypeError::new_err(format!("{name}: expected one number, got an array"))
+            }),
+            Err(_) => Err(PyValueError::new_err(format!(
+                "{name}: expected a quantity in {shown} (or convertible to it), got {}",
+                value.getattr("unit")?
+            ))),
+        };
+    }
+    value.extract::<f64>().map_err(|_| {
+        let kind = value
+            .get_type()
+            .name()
+            .map_or("?".into(), |n| n.to_string());
+        PyTypeError::new_err(format!("{name}: expected a number, got {kind}"))
+    })
+}
+
+/// [`si`] for an optional constant.
+fn si_option(value: Option<&Bound<'_, PyAny>>, name: &str, unit: &str) -> PyResult<Option<f64>> {
+    value.map(|v| si(v, name, unit)).transpose()
+}
+
 impl Material {
     fn checked(inner: thresholds::Material) -> PyResult<Self> {
         inner.validate().map_err(|e| value_error(&e))?;
@@ -30,12 +70,17 @@ impl Material {
 impl Material {
     #[new]
     #[pyo3(signature = (gamma_sv, young, poisson, density))]
-    fn new(gamma_sv: f64, young: f64, poisson: f64, density: f64) -> PyResult<Self> {
+    fn new(
+        gamma_sv: &Bound<'_, PyAny>,
+        young: &Bound<'_, PyAny>,
+        poisson: &Bound<'_, PyAny>,
+        density: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
         Self::checked(thresholds::Material {
-            gamma_sv,
-            young,
-            poisson,
-            density,
+            gamma_sv: si(gamma_sv, "gamma_sv", "J/m2")?,
+            young: si(young, "young", "Pa")?,
+            poisson: si(poisson, "poisson", "")?,
+            density: si(density, "density", "kg/m3")?,
         })
     }
 
@@ -78,17 +123,17 @@ impl Material {
     #[pyo3(signature = (*, gamma_sv=None, young=None, poisson=None, density=None))]
     fn replace(
         &self,
-        gamma_sv: Option<f64>,
-        young: Option<f64>,
-        poisson: Option<f64>,
-        density: Option<f64>,
+        gamma_sv: Option<&Bound<'_, PyAny>>,
+        young: Option<&Bound<'_, PyAny>>,
+        poisson: Option<&Bound<'_, PyAny>>,
+        density: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let m = self.inner;
         Self::checked(thresholds::Material {
-            gamma_sv: gamma_sv.unwrap_or(m.gamma_sv),
-            young: young.unwrap_or(m.young),
-            poisson: poisson.unwrap_or(m.poisson),
-            density: density.unwrap_or(m.density),
+            gamma_sv: si_option(gamma_sv, "gamma_sv", "J/m2")?.unwrap_or(m.gamma_sv),
+            young: si_option(young, "young", "Pa")?.unwrap_or(m.young),
+            poisson: si_option(poisson, "poisson", "")?.unwrap_or(m.poisson),
+            density: si_option(density, "density", "kg/m3")?.unwrap_or(m.density),
         })
     }
 

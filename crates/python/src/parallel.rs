@@ -14,18 +14,26 @@ pub fn batch() -> usize {
     (rayon::current_num_threads() * ELEMENTS_PER_THREAD).max(1)
 }
 
+/// A chunk that took less than this grows fourfold for the next: elements from the master table
+/// take microseconds, and a chunk of 8 of them would spend its time in taking the GIL back and
+/// in rayon's start (1e6 elements: seconds); chunks of searches stay small, so Ctrl-C still
+/// stops them within about a second.
+const QUICK_CHUNK: std::time::Duration = std::time::Duration::from_millis(20);
+
 /// `f(0), ..., f(n - 1)` on all cores with the GIL released, in chunks with a check for signals
 /// (Ctrl-C raises `KeyboardInterrupt`) after each; the first error in index order is returned.
+/// Chunks start at [`batch`] elements and grow while they are quick ([`QUICK_CHUNK`]).
 pub fn map<T, F>(py: Python<'_>, n: usize, f: F) -> PyResult<Vec<T>>
 where
     T: Send,
     F: Fn(usize) -> Result<T, Error> + Sync + Send,
 {
-    let chunk = batch();
+    let mut chunk = batch();
     let mut out = Vec::with_capacity(n);
     let mut start = 0;
     while start < n {
         let end = (start + chunk).min(n);
+        let began = std::time::Instant::now();
         let part: Vec<Result<T, Error>> = py.detach(|| {
             if end - start == 1 {
                 vec![f(start)]
@@ -37,6 +45,9 @@ where
             out.push(r?);
         }
         py.check_signals()?;
+        if began.elapsed() < QUICK_CHUNK {
+            chunk = chunk.saturating_mul(4);
+        }
         start = end;
     }
     Ok(out)

@@ -11,13 +11,13 @@ use pyo3::types::PyDict;
 use thresholds::sweep::{
     Cell, Grid, Laws, NamedMaterial, Partner, Row, TVisAxis, COLUMNS, WARNINGS_SEPARATOR,
 };
-use thresholds::{OutOfRange, SearchOptions, TVisLaw};
+use thresholds::{OutOfRange, TVisLaw};
 
 /// Rows of the chunks `chunks` (all when None) of the grid, as columns: `index` (grid order),
 /// then each of `thresholds::sweep::COLUMNS` (NaN where a number does not exist, `radius2` on
 /// a wall; `warnings` joined by "; "), and `n_chunks`, the grid's number of chunks.
 #[pyfunction]
-#[pyo3(signature = (materials, gamma_sv, radius, radius2, wall, t_vis, t_vis_law, k, v_max, rel_tol, chunks=None))]
+#[pyo3(signature = (materials, gamma_sv, radius, radius2, wall, t_vis, t_vis_law, k, v_max, rel_tol, chunks=None, method="search"))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep<'py>(
     py: Python<'py>,
@@ -32,6 +32,7 @@ pub fn sweep<'py>(
     v_max: Option<f64>,
     rel_tol: f64,
     chunks: Option<Vec<usize>>,
+    method: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
     let t_vis = match (t_vis, t_vis_law) {
         (Some(t), None) => TVisAxis::Values(t),
@@ -72,11 +73,7 @@ pub fn sweep<'py>(
     };
     let input = |bad: OutOfRange| -> PyErr { Error::Input { bad, index: 0 }.into() };
     grid.validate().map_err(input)?;
-    let opts = SearchOptions {
-        rel_tol,
-        v_max,
-        ..SearchOptions::default()
-    };
+    let opts = crate::args::search_options(v_max, rel_tol, method)?;
     opts.validate().map_err(input)?;
     let all = grid.chunks();
     let picked: Vec<usize> = chunks.unwrap_or_else(|| (0..all.len()).collect());

@@ -14,9 +14,9 @@ CO2 = st.Material.co2()
 
 
 def same(a, b):
-    """Results equal field by field, NaN equal to NaN."""
+    """Results equal field by field, NaN equal to NaN (numbers), strings equal."""
     return all(
-        np.array_equal(x, y, equal_nan=True)
+        x == y if isinstance(x, str) else np.array_equal(x, y, equal_nan=True)
         for x, y in zip(dataclasses.astuple(a), dataclasses.astuple(b))
     )
 

@@ -7,7 +7,7 @@ are SI.
 """
 
 from os import PathLike
-from typing import Any, Dict, List, Optional, Tuple, Union, final
+from typing import Any, Dict, List, Optional, Tuple, TypedDict, Union, final
 
 import numpy as np
 import numpy.typing as npt
@@ -83,9 +83,68 @@ class Material:
     def __hash__(self) -> int: ...
     def __reduce__(self) -> Tuple[type, Tuple[float, float, float, float]]: ...
 
+class JkrColumns(TypedDict):
+    """The columns of :func:`jkr` (flat arrays, SI)."""
+
+    a_eq: _F  # equilibrium contact radius (m)
+    delta_eq: _F  # equilibrium mutual approach (m)
+    tabor: _F  # Tabor parameter (dimensionless)
+    f_crit: _F  # pull-off force (N)
+    delta_crit: _F  # critical pulling length (m)
+    e_stick: _F  # E_stick,JKR (J)
+    e_break: _F  # E_break,JKR (J)
+    v_stick_jkr: _F  # V_stick,JKR (m/s)
+    warnings: _Warnings
+
+class CollisionColumns(TypedDict, total=False):
+    """The columns of :func:`collide` (flat, SI)."""
+
+    outcome: List[str]  # 'sticking', 'double' or 'bouncing'
+    e: _F  # -V_out/V_in (dimensionless)
+    v_out: _F  # approach speed at the end of contact (m/s)
+    contact_time: _F  # duration of the contact (s; NaN for sticking)
+    v_stick_jkr: _F  # V_stick,JKR (m/s)
+    sticking_criterion: List[Optional[str]]  # 'energy_bound', 'oscillations' or None
+    warnings: _Warnings
+    trajectory: Dict[str, _F]  # t (s), a, delta (m), delta_dot (m/s), beta, energy (J)
+
+class VStickColumns(TypedDict):
+    """The columns of :func:`v_stick` (flat, m/s; NaN where none)."""
+
+    v_stick: _F  # V_stick (m/s)
+    v_double_onset: _F  # V_double_onset (m/s)
+    v_stick_jkr: _F  # V_stick,JKR (m/s)
+    no_bouncing_below: _F  # the search limit without bouncing (m/s)
+    v_max: _F  # the highest speed searched (m/s)
+    method: npt.NDArray[np.uint8]  # 0: the search answered, 1: the table
+    warnings: _Warnings
+
+class VFragColumns(TypedDict):
+    """The columns of :func:`v_frag` (flat; NaN where none)."""
+
+    v_frag: _F  # V_frag = 10 V_stick (m/s)
+    v_stick: _F  # V_stick (m/s)
+    t_vis: _F  # the relaxation time used (s)
+    v_frag_jkr: _F  # V_frag,JKR (m/s)
+    v_stick_jkr: _F  # V_stick,JKR (m/s)
+    no_bouncing_below: _F  # the search limit without bouncing (m/s)
+    method: npt.NDArray[np.uint8]  # 0: the search answered, 1: the table
+    warnings: _Warnings
+
+class FitColumns(TypedDict):
+    """The columns of :func:`fit_t_vis` (flat)."""
+
+    t_vis: _F  # T_vis for V_stick (s)
+    t_vis_min: _F  # T_vis for V_stick - dV (s; 0 at or below V_stick,JKR)
+    t_vis_max: _F  # T_vis for V_stick + dV (s)
+    v_stick_jkr: _F  # V_stick,JKR (m/s)
+    method: npt.NDArray[np.uint8]  # 1 when the table gave every V_stick, else 0
+    warnings: _Warnings
+
 def crack_speed(k: _F, beta: _F) -> _F: ...
 def t_vis_law(law: str, radius: _F) -> _F: ...
-def jkr(material: Material, radius: _F, radius2: Optional[_F], wall: bool) -> Dict[str, Any]: ...
+def parallel_batch() -> int: ...
+def jkr(material: Material, radius: _F, radius2: Optional[_F], wall: bool) -> JkrColumns: ...
 def collide(
     material: Material,
     radius: _F,
@@ -96,7 +155,7 @@ def collide(
     k: _F,
     t_end: Optional[float],
     trajectory: bool,
-) -> Dict[str, Any]: ...
+) -> CollisionColumns: ...
 def v_stick(
     material: Material,
     radius: _F,
@@ -106,7 +165,8 @@ def v_stick(
     k: _F,
     v_max: Optional[float],
     rel_tol: float,
-) -> Dict[str, Any]: ...
+    method: str,
+) -> VStickColumns: ...
 def fit_t_vis(
     material: Material,
     radius: _F,
@@ -117,7 +177,8 @@ def fit_t_vis(
     k: _F,
     v_max: Optional[float],
     rel_tol: float,
-) -> Dict[str, Any]: ...
+    method: str,
+) -> FitColumns: ...
 def v_frag(
     material: Material,
     radius: _F,
@@ -127,7 +188,8 @@ def v_frag(
     k: _F,
     v_max: Optional[float],
     rel_tol: float,
-) -> Dict[str, Any]: ...
+    method: str,
+) -> VFragColumns: ...
 def sweep(
     materials: List[Tuple[str, Material]],
     gamma_sv: Optional[List[float]],
@@ -140,6 +202,5 @@ def sweep(
     v_max: Optional[float],
     rel_tol: float,
     chunks: Optional[List[int]] = None,
+    method: str = "search",
 ) -> Dict[str, Any]: ...
-
-def parallel_batch() -> int: ...

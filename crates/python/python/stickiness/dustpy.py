@@ -14,9 +14,10 @@ coats the monomers at each radius of the disc, by temperature:
 - ``T <= t_co2``: CO2 ice, V_frag = 10 V_stick with T_vis,CO2(R1) = 1e-11 s (R1/1 um)^1.11
   (Section 5.3) and the CO2 constants of Section 3.
 
-V_stick is that of two identical monomers of radius ``monomer_radius``, with k = 0.01.
-Each (ice, monomer radius) is computed once and mapped onto the grid, so an updater on a grid of
-1000 cells costs microseconds a call. ``width`` (K) replaces the steps at the snow lines by
+V_stick is that of two identical monomers of radius ``monomer_radius``, with k = 0.01, from
+the master table (``method="table"``: microseconds a radius, the exact search where the table
+does not vouch). Each (ice, monomer radius) is computed once and mapped onto the grid, so an
+updater on a grid of 1000 cells, with a monomer radius per cell, costs microseconds a call. ``width`` (K) replaces the steps at the snow lines by
 smooth transitions (tanh, in log V_frag) over that width.
 
 Usage with DustPy (``pip install dustpy``; it is not needed to import :mod:`stickiness`)::
@@ -36,7 +37,9 @@ from typing import Any, Callable, Dict, Optional, Tuple, Union
 
 import numpy as np
 
-from . import Material, v_frag
+from . import _args
+from ._core import Material
+from ._functions import v_frag
 
 #: Temperature (K) above which the monomers are bare refractory grains: the H2O snow line,
 #: 150 K (the condensation temperature of water ice in protoplanetary discs; Lecar et al. 2006).
@@ -70,7 +73,11 @@ class VFragProfile:
         v_frag_refractory: float = 1.0,
         width: Optional[float] = None,
     ) -> None:
-        radius = np.asarray(monomer_radius, dtype=np.float64)
+        radius = _args.float_array("monomer_radius", monomer_radius)
+        t_h2o = _args.scalar("t_h2o", t_h2o)
+        t_co2 = _args.scalar("t_co2", t_co2)
+        v_frag_refractory = _args.scalar("v_frag_refractory", v_frag_refractory)
+        width = _args.scalar_option("width", width)
         if not np.all(np.isfinite(radius) & (radius > 0)):
             raise ValueError(f"monomer_radius = {monomer_radius!r}: must be > 0 and finite (m)")
         for name, value in (("t_h2o", t_h2o), ("t_co2", t_co2)):
@@ -93,18 +100,27 @@ class VFragProfile:
 
     def ice_v_frag(self, ice: str, radius: float) -> float:
         """V_frag (m/s) of aggregates of ``ice`` ('h2o' or 'co2') monomers of ``radius`` (m)."""
-        key = (ice, float(radius))
-        if key not in self._cache:
+        return float(self._ice_v_frags(ice, np.array([float(radius)]))[0])
+
+    def _ice_v_frags(self, ice: str, radii: np.ndarray) -> np.ndarray:
+        """V_frag (m/s) of ``ice`` monomers of each of ``radii`` (m), from the cache, computing
+        the missing ones in one call."""
+        missing = [r for r in radii if (ice, float(r)) not in self._cache]
+        if missing:
             material, law = _ICES[ice]
-            r = v_frag(material(), radius=float(radius), t_vis_law=law)
-            value = float(r.v_frag)  # scalar in, scalar out
-            if not math.isfinite(value):
+            r = v_frag(material(), np.array(missing), t_vis_law=law, method="table")
+            values = np.atleast_1d(r.v_frag)
+            bad = ~np.isfinite(values)
+            if bad.any():
+                i = int(np.argmax(bad))
                 raise ValueError(
-                    f"{ice} monomers of {radius} m: no bouncing up to {r.no_bouncing_below} m/s, "
-                    "so V_frag exceeds every collision speed searched"
+                    f"{ice} monomers of {missing[i]} m: no bouncing up to "
+                    f"{np.atleast_1d(r.no_bouncing_below)[i]} m/s, so V_frag exceeds every "
+                    "collision speed searched"
                 )
-            self._cache[key] = value
-        return self._cache[key]
+            for radius, value in zip(missing, values):
+                self._cache[(ice, float(radius))] = float(value)
+        return np.array([self._cache[(ice, float(r))] for r in radii])
 
     def _zone_values(self, ice: str, shape: Tuple[int, ...]) -> np.ndarray:
         """ln V_frag (m/s) of one ice on the grid (per distinct radius)."""
@@ -112,12 +128,12 @@ class VFragProfile:
             return np.full(shape, math.log(self.ice_v_frag(ice, float(self.monomer_radius))))
         radius = np.broadcast_to(self.monomer_radius, shape)
         distinct, where = np.unique(radius, return_inverse=True)
-        logs = np.log([self.ice_v_frag(ice, r) for r in distinct])
+        logs = np.log(self._ice_v_frags(ice, distinct))
         return logs[where.reshape(shape)]
 
     def __call__(self, T: Any) -> np.ndarray:
         """V_frag in cm/s at temperatures ``T`` (K)."""
-        T = np.asarray(T, dtype=np.float64)
+        T = _args.float_array("T", T)
         if not np.all(np.isfinite(T) & (T > 0)):
             raise ValueError("T: temperatures must be > 0 and finite (K)")
         shape = T.shape

@@ -19,8 +19,9 @@ from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from . import _core
+from . import _args, _core
 from ._core import Material
+from ._docs import shared
 
 #: The DataFrame's columns, as the CLI's CSV header (stated once, in the Rust library).
 COLUMNS: Tuple[str, ...] = tuple(_core.SWEEP_COLUMNS)
@@ -29,9 +30,7 @@ COLUMNS: Tuple[str, ...] = tuple(_core.SWEEP_COLUMNS)
 
 
 def _axis(name: str, values: Any) -> Tuple[float, ...]:
-    from . import _float_array
-
-    a = _float_array(name, values).reshape(-1)
+    a = _args.float_array(name, values).reshape(-1)
     if a.size == 0:
         raise ValueError(f"{name}: an axis needs at least one value")
     return tuple(float(x) for x in a)
@@ -72,6 +71,7 @@ class SweepSpec:
     k: Tuple[float, ...]
     v_max: Optional[float]
     rel_tol: float
+    method: str = "search"
 
     @property
     def n_chunks(self) -> int:
@@ -94,6 +94,7 @@ class SweepSpec:
                     self.v_max,
                     self.rel_tol,
                     None if chunks is None else list(chunks),
+                    self.method,
                 )
             )
         except _core._InputError as e:
@@ -122,56 +123,99 @@ def _batches(n: int, size: int) -> List[List[int]]:
     return [list(range(i, min(i + size, n))) for i in range(0, n, size)]
 
 
+@shared
 def sweep(
     material: Union[str, Material, Sequence[Union[str, Material]]] = "co2",
     radius: Any = _core.DEFAULT_RADIUS,
     t_vis: Any = None,
+    *,
     gamma_sv: Any = None,
     k: Any = _core.DEFAULT_K,
-    t_vis_law: Optional[str] = None,
     radius2: Any = None,
     wall: bool = False,
-    client: Any = None,
-    progress: bool = False,
+    t_vis_law: Optional[str] = None,
     v_max: Optional[float] = None,
     rel_tol: float = _core.DEFAULT_REL_TOL,
+    method: str = "search",
+    client: Any = None,
+    progress: bool = False,
     chunks_per_task: int = 1,
 ) -> Any:
-    """V_stick, V_double_onset, V_stick,JKR and V_frag = 10 V_stick over a grid (SI).
+    """V_stick, V_double_onset, V_stick,JKR and V_frag = 10 V_stick over a grid, as a pandas
+    DataFrame.
 
-    Every axis (``material``, ``gamma_sv``, ``radius``, ``radius2``, ``t_vis``, ``k``) takes one
-    value or a sequence; the grid is their product in that order (outermost first).
-    ``gamma_sv=None`` keeps each material's; ``t_vis_law='co2'|'h2o'`` takes T_vis from the size
-    law at each radius instead of a ``t_vis`` axis; ``radius2=None`` means identical spheres and
-    ``wall=True`` a sphere on a wall.
+    Parameters
+    ----------
+    material : str, Material or sequence of them, optional
+        The materials (outermost axis): preset names, JSON paths or :class:`Material`.
+        Default ``'co2'``.
+    radius : float, array_like or Quantity, optional
+        Radii R1 (m). Default 60e-6.
+    t_vis : float, array_like or Quantity
+        Relaxation times T_vis (s). Give it or ``t_vis_law``.
+    gamma_sv : float, array_like or Quantity, optional
+        Surface free energies gamma_SV (J/m^2) replacing each material's. Default None: the
+        material's.
+    k : float or array_like, optional
+        Modulus ratios k (dimensionless; innermost axis). Default 0.01.
+    {radius2}
+    {wall}
+    {t_vis_law}
+    {v_max}
+    {rel_tol}
+    {method}
+    client : dask.distributed.Client, optional
+        Map the grid's chunks over its workers (a LocalCluster or a Slurm cluster alike), with
+        the same result. Default None: all cores of this process.
+    progress : bool, optional
+        Show progress on stderr (Dask's progress bar with a client). Default False.
+    chunks_per_task : int, optional
+        Chunks of the grid in one Dask task. Default 1.
 
-    Returns a pandas DataFrame with the CLI's columns (``stickiness sweep``) and values, NaN
-    where a value does not exist. ``client=None`` computes on all cores of this process;
-    ``client=`` a ``dask.distributed.Client`` maps ``chunks_per_task`` chunks a task over its
-    workers (a ``LocalCluster`` or a Slurm cluster from dask-jobqueue alike), with the same
-    result. ``progress=True`` shows progress on stderr (Dask's progress bar with a client).
+    Returns
+    -------
+    pandas.DataFrame
+        One row a point, in grid order (material, gamma_sv, radius, radius2, t_vis, k;
+        outermost first), with the columns of the CLI's ``stickiness sweep`` (SI; NaN where a
+        value does not exist; ``method`` says which answered).
+
+    Raises
+    ------
+    {raises}
+
+    Notes
+    -----
+    Each chunk holds every T_vis of one combination of the other axes, each search seeded by
+    its neighbours' thresholds; the chunks are those of the CLI (both come from the Rust
+    ``thresholds::sweep``), so the values are the same. With a client a lost worker costs a
+    recomputed chunk, never a row. ``pandas`` is needed (``pip install 'stickiness[sweep]'``),
+    ``dask.distributed`` only for ``client=``.
+
+    Examples
+    --------
+    >>> import stickiness as st
+    >>> df = st.sweep("co2", 60e-6, [1e-10, 1e-9], method="table")
+    >>> list(df["v_stick"].round(5)), list(df["method"])
+    ([0.0205, 0.04138], ['table', 'table'])
     """
-    if isinstance(wall, (bool, np.bool_)) is False:
-        raise TypeError(f"wall: expected a bool, got {type(wall).__name__}")
-    if wall and radius2 is not None:
-        raise ValueError("radius2 and wall=True exclude each other (a wall is R2 -> infinity)")
+    wall = _args.geometry(radius2, wall)
     if (t_vis is None) == (t_vis_law is None):
         raise TypeError("give one of t_vis (s) and t_vis_law ('co2' or 'h2o')")
-    if not isinstance(chunks_per_task, int) or chunks_per_task < 1:
+    if not isinstance(chunks_per_task, int) or isinstance(chunks_per_task, bool) or chunks_per_task < 1:
         raise ValueError(f"chunks_per_task = {chunks_per_task!r}: must be an integer >= 1")
-    from . import _scalar, _scalar_option
-
+    progress = _args.flag("progress", progress)
     spec = SweepSpec(
         materials=_materials(material),
         gamma_sv=None if gamma_sv is None else _axis("gamma_sv", gamma_sv),
         radius=_axis("radius", radius),
         radius2=None if radius2 is None else _axis("radius2", radius2),
-        wall=bool(wall),
+        wall=wall,
         t_vis=None if t_vis is None else _axis("t_vis", t_vis),
-        t_vis_law=t_vis_law,
+        t_vis_law=_args.law_name("t_vis_law", t_vis_law),
         k=_axis("k", k),
-        v_max=_scalar_option("v_max", v_max),
-        rel_tol=_scalar("rel_tol", rel_tol),
+        v_max=_args.scalar_option("v_max", v_max),
+        rel_tol=_args.scalar("rel_tol", rel_tol),
+        method=_args.method(method),
     )
     # check the whole grid before any work (the core validates the axes on every call)
     spec.compute([])

@@ -1,0 +1,252 @@
+"""Argument handling shared by the public functions: numbers and arrays, astropy quantities,
+broadcasting, the material, the geometry, T_vis, the method, and the warnings.
+
+Every public function converts its arguments here and then calls the compiled core; nothing
+here computes physics.
+"""
+
+from __future__ import annotations
+
+import sys
+import warnings
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _core
+from ._core import Material
+
+#: A number or an array of numbers (anything ``numpy.asarray`` turns into real numbers), or an
+#: ``astropy.units.Quantity`` of the argument's dimension.
+ArrayLike = Union[float, int, Sequence[float], np.ndarray]
+#: A Python float for scalar inputs, an ndarray of the broadcast shape for array inputs.
+FloatOrArray = Union[float, np.ndarray]
+
+#: The SI unit of each dimensional argument, as astropy spells it; a Quantity is converted to it.
+UNITS: Dict[str, str] = {
+    "radius": "m",
+    "radius2": "m",
+    "monomer_radius": "m",
+    "t_vis": "s",
+    "t_end": "s",
+    "v_in": "m/s",
+    "v_stick": "m/s",
+    "v_stick_err": "m/s",
+    "v_max": "m/s",
+    "v_frag_refractory": "m/s",
+    "gamma_sv": "J/m2",
+    "young": "Pa",
+    "density": "kg/m3",
+    "T": "K",
+    "t_h2o": "K",
+    "t_co2": "K",
+    "width": "K",
+    "median": "m",
+}
+
+#: The methods of the threshold functions, and their codes in the core's ``"method"`` column.
+METHODS = ("search", "table")
+
+
+class StickinessWarning(UserWarning):
+    """Valid input for which the model's results should be read with care.
+
+    Issued for a Tabor parameter below 1 (JKR theory, on which the model stands, is outside
+    its validity; Section 2.2), a radius outside 10 nm - 1 cm (likely a unit slip), impact
+    speeds above 1 km/s, and fits whose range reaches V_stick,JKR or the search limit.
+    """
+
+
+def _is_quantity(value: Any) -> bool:
+    """Whether ``value`` is an ``astropy.units.Quantity`` (without importing astropy)."""
+    units = sys.modules.get("astropy.units")
+    return units is not None and isinstance(value, units.Quantity)
+
+
+def si(name: str, value: Any) -> Any:
+    """``value`` in SI units: a Quantity is converted to the unit of ``name`` (``UNITS``); a
+    wrong dimension raises ``ValueError`` naming the argument and the expected unit. Other
+    values are returned as they are."""
+    if not _is_quantity(value):
+        return value
+    unit = UNITS.get(name)
+    if unit is None:
+        raise TypeError(f"{name}: expected a plain number (dimensionless), got a quantity in {value.unit}")
+    try:
+        return value.to_value(unit)
+    except Exception:  # astropy.units.UnitConversionError (and unit parsing errors)
+        raise ValueError(
+            f"{name}: expected a quantity in {unit} (or convertible to it), got {value.unit}"
+        ) from None
+
+
+def float_array(name: str, value: Any) -> np.ndarray:
+    """``value`` as a float64 array (SI); ``TypeError`` naming ``name`` for anything that is not
+    real numbers."""
+    value = si(name, value)
+    if isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name}: expected a number or an array of numbers, got a bool")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            a = np.asarray(value)
+    except Exception as e:  # ragged lists and the like
+        raise TypeError(f"{name}: expected a number or an array of numbers ({e})") from None
+    if a.dtype.kind not in "iuf":
+        raise TypeError(
+            f"{name}: expected real numbers, got {type(value).__name__} of dtype {a.dtype}"
+        )
+    return a.astype(np.float64, copy=False)
+
+
+def scalar(name: str, value: Any) -> float:
+    """One number (SI); ``TypeError`` naming ``name`` for an array or a non-number."""
+    a = float_array(name, value)
+    if a.ndim != 0:
+        raise TypeError(f"{name}: expected one number, got an array of shape {a.shape}")
+    return float(a)
+
+
+def scalar_option(name: str, value: Any) -> Optional[float]:
+    """``None`` or one number (SI)."""
+    return None if value is None else scalar(name, value)
+
+
+def flag(name: str, value: Any) -> bool:
+    """A bool; ``TypeError`` naming ``name`` for anything else."""
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name}: expected a bool, got {type(value).__name__}")
+    return bool(value)
+
+
+def material(value: Any) -> Material:
+    """A :class:`Material`; a string is a preset name (``"co2"``) or a JSON file's path."""
+    if isinstance(value, Material):
+        return value
+    if isinstance(value, str):
+        try:
+            return Material.named(value)
+        except OSError as e:  # a path that is no material file
+            raise ValueError(f"material = {value!r}: {e}") from None
+    raise TypeError(
+        f"material: expected a stickiness.Material or a preset name, got {type(value).__name__}"
+    )
+
+
+def geometry(radius2: Any, wall: Any) -> bool:
+    """Checks the second body: ``radius2`` or ``wall``, not both. Returns ``wall``."""
+    wall = flag("wall", wall)
+    if wall and radius2 is not None:
+        raise ValueError("radius2 and wall=True exclude each other (a wall is R2 -> infinity)")
+    return wall
+
+
+def method(value: Any) -> str:
+    """``"search"`` or ``"table"``."""
+    if not isinstance(value, str) or value.lower() not in METHODS:
+        raise ValueError(f"method = {value!r}: must be 'search' or 'table'")
+    return value.lower()
+
+
+def law_name(name: str, value: Any, required: bool = False) -> Optional[str]:
+    """``None`` (unless ``required``) or a size law's name (``'co2'``, ``'h2o'``)."""
+    if value is None and not required:
+        return None
+    if not isinstance(value, str):
+        raise TypeError(f"{name}: expected 'co2' or 'h2o', got {type(value).__name__}")
+    return value
+
+
+def t_vis(value: Any, law: Optional[str], radius: Any, default: Optional[float]) -> Any:
+    """T_vis as given, from the size law ``law`` at ``radius``, or ``default`` (None: required)."""
+    law = law_name("t_vis_law", law)
+    if law is not None:
+        if value is not None:
+            raise ValueError("give t_vis or t_vis_law, not both")
+        b = Broadcast(radius=radius)
+        return b.out(b.call(_core.t_vis_law, law, b.flat["radius"]))
+    if value is None:
+        if default is None:
+            raise TypeError("missing argument: t_vis (s) or t_vis_law ('co2' or 'h2o')")
+        return default
+    return value
+
+
+#: The number arguments that may be None (absent) in a broadcast.
+OPTIONAL = ("radius2",)
+
+
+class Broadcast:
+    """Number arguments broadcast together and flattened for the compiled core."""
+
+    def __init__(self, **args: Any) -> None:
+        for k, v in args.items():
+            if v is None and k not in OPTIONAL:
+                raise TypeError(f"{k}: expected a number or an array of numbers, got None")
+        arrays = {k: float_array(k, v) for k, v in args.items() if v is not None}
+        self.shapes: Dict[str, Tuple[int, ...]] = {k: a.shape for k, a in arrays.items()}
+        try:
+            views = np.broadcast_arrays(*arrays.values())
+        except ValueError:
+            shapes = ", ".join(f"{k} {s}" for k, s in self.shapes.items())
+            raise ValueError(f"the arguments cannot be broadcast together: {shapes}") from None
+        self.shape: Tuple[int, ...] = views[0].shape if views else ()
+        self.flat: Dict[str, np.ndarray] = {
+            k: np.ascontiguousarray(v, dtype=np.float64).reshape(-1)
+            for k, v in zip(arrays, views)
+        }
+        self.scalar = all(len(s) == 0 for s in self.shapes.values())
+
+    @property
+    def size(self) -> int:
+        return int(np.prod(self.shape)) if self.shape else 1
+
+    def out(self, flat: Any) -> Any:
+        """A flat result as a Python scalar (scalar inputs) or an array of the broadcast shape."""
+        a = np.asarray(flat)
+        if self.scalar:
+            v = a.reshape(-1)[0]
+            return v.item() if hasattr(v, "item") else v
+        return a.reshape(self.shape)
+
+    def methods(self, codes: Any) -> Any:
+        """The core's method codes as ``'search'``/``'table'``: a string, or an array of them."""
+        names = np.array(METHODS)[np.asarray(codes, dtype=np.intp)]
+        return str(names.reshape(-1)[0]) if self.scalar else names.reshape(self.shape)
+
+    def name_at(self, field: str, flat: int) -> str:
+        """``field`` with the index, in its own shape, of element ``flat`` of the broadcast."""
+        shape = self.shapes.get(field, ())
+        if not shape or not self.shape:
+            return field
+        full = np.unravel_index(flat, self.shape)
+        offset = len(self.shape) - len(shape)
+        own = [0 if shape[j] == 1 else int(full[offset + j]) for j in range(len(shape))]
+        return f"{field}[{', '.join(map(str, own))}]"
+
+    def call(self, fn: Any, *args: Any) -> Any:
+        """Calls the core, turning its bad-input errors into ``ValueError`` naming the element."""
+        try:
+            return fn(*args)
+        except _core._InputError as e:
+            field, flat, rest = e.args
+            raise ValueError(self.name_at(field, flat) + rest) from None
+
+    def warn(self, found: List[Tuple[int, str, str]], stacklevel: int = 4) -> None:
+        """One ``StickinessWarning`` per kind of warning found, naming the first element.
+
+        ``stacklevel`` 4: ``warnings.warn`` <- here <- the public function's helper <- the public
+        function <- the user's line; a public function that calls ``warn`` itself passes 3.
+        """
+        kinds: Dict[str, List[Tuple[int, str]]] = {}
+        for index, kind, text in found:
+            kinds.setdefault(kind, []).append((index, text))
+        for items in kinds.values():
+            index, text = items[0]
+            if not self.scalar:
+                where = np.unravel_index(index, self.shape) if self.shape else ()
+                text += (
+                    f" [first at element {tuple(int(i) for i in where)}; "
+                    f"{len(items)} of {self.size} elements]"
+                )
+            warnings.warn(text, StickinessWarning, stacklevel=stacklevel)

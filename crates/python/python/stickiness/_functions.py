@@ -1,0 +1,453 @@
+"""The public functions: the crack law, the JKR contact, one collision, the thresholds, the fit
+and the size laws. Each converts its arguments (:mod:`stickiness._args`), calls the compiled
+core and builds its result (:mod:`stickiness._results`); SI units in and out.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Optional, Union
+
+import numpy as np
+
+from . import _args, _core
+from ._args import ArrayLike, Broadcast, FloatOrArray
+from ._core import DEFAULT_K, DEFAULT_RADIUS, DEFAULT_REL_TOL, Material
+from ._docs import shared
+from ._results import JKR, Collision, TVisFit, VFrag, VStick
+
+
+def crack_speed(k: ArrayLike, beta: ArrayLike) -> FloatOrArray:
+    """Greenwood's normalized crack speed v(k, beta) (Appendix A).
+
+    Parameters
+    ----------
+    k : float or array_like
+        Ratio of the relaxed to the instantaneous modulus (dimensionless, 0 < k < 1).
+    beta : float or array_like
+        Normalized apparent surface energy G_eff / gamma (dimensionless, k < beta < 1/k).
+
+    Returns
+    -------
+    float or ndarray
+        v = sigma0^2 T_vis a_dot / (E* gamma) (dimensionless): > 0 (the contact grows) for
+        beta < 1, < 0 above, v(k, 1) = 0. Broadcasts like numpy.
+
+    Raises
+    ------
+    TypeError, ValueError
+        Arguments that are not real numbers, or out of their ranges (naming them).
+
+    Notes
+    -----
+    The parametric form in the transit time alpha (Appendix A) is tabulated once per k and
+    interpolated to 1e-8.
+
+    Examples
+    --------
+    >>> import stickiness as st
+    >>> st.crack_speed(0.01, 1.0)
+    0.0
+    >>> bool(st.crack_speed(0.01, 0.5) > 0 > st.crack_speed(0.01, 2.0))
+    True
+    """
+    b = Broadcast(k=k, beta=beta)
+    return b.out(b.call(_core.crack_speed, b.flat["k"], b.flat["beta"]))
+
+
+def t_vis_law(law: str, radius: ArrayLike) -> FloatOrArray:
+    """The relaxation time T_vis (s) of the size laws of Section 5.3, at radius R1 (m).
+
+    Parameters
+    ----------
+    law : {'co2', 'h2o'}
+        ``'co2'``: T_vis = 1e-11 s (R1/1 um)^1.11; ``'h2o'``: T_vis = 1e-10 s (R1/1.5 um)^1.11
+        (Gundlach et al. 2015). Any case.
+    radius : float, array_like or Quantity
+        Grain radius R1 (m).
+
+    Returns
+    -------
+    float or ndarray
+        T_vis (s).
+
+    Raises
+    ------
+    TypeError, ValueError
+        An unknown law, or a radius that is not > 0 and finite.
+
+    Examples
+    --------
+    >>> import stickiness as st
+    >>> round(st.t_vis_law("h2o", 90e-6), 11)  # Section 5.3: 9.4e-9 s
+    9.41e-09
+    """
+    _args.law_name("law", law, required=True)
+    b = Broadcast(radius=radius)
+    return b.out(b.call(_core.t_vis_law, law, b.flat["radius"]))
+
+
+@shared
+def jkr(
+    material: Union[Material, str],
+    radius: ArrayLike = DEFAULT_RADIUS,
+    *,
+    radius2: Optional[ArrayLike] = None,
+    wall: bool = False,
+) -> JKR:
+    """The JKR contact of two bodies of one material (Sections 2.2, 5.1, 6).
+
+    Parameters
+    ----------
+    {material}
+    {radius}
+    {radius2}
+    {wall}
+
+    Returns
+    -------
+    JKR
+        a_eq, delta_eq (m), the Tabor parameter, F_crit (N), delta_crit (m), E_stick,JKR,
+        E_break,JKR (J) and V_stick,JKR (m/s).
+
+    Raises
+    ------
+    {raises}
+
+    Notes
+    -----
+    V_stick,JKR = (14.18/m*)^(1/2) (gamma^5 R^4/E*^2)^(1/6) with the reduced radius R and mass
+    m* of the two bodies and the work of adhesion gamma = 2 gamma_SV.
+
+    {broadcast}
+
+    Examples
+    --------
+    >>> import stickiness as st
+    >>> round(st.jkr("co2", 60e-6).v_stick_jkr, 5)  # Section 5.1: 1.66e-2 m/s
+    0.01659
+    """
+    m = _args.material(material)
+    wall = _args.geometry(radius2, wall)
+    b = Broadcast(radius=radius, radius2=radius2)
+    d = b.call(_core.jkr, m, b.flat["radius"], b.flat.get("radius2"), wall)
+    b.warn(d["warnings"], stacklevel=3)
+    return JKR(**{f: b.out(d[f]) for f in JKR.__dataclass_fields__})
+
+
+@shared
+def collide(
+    material: Union[Material, str],
+    radius: ArrayLike = DEFAULT_RADIUS,
+    t_vis: Optional[ArrayLike] = None,
+    v_in: Optional[ArrayLike] = None,
+    *,
+    k: ArrayLike = DEFAULT_K,
+    radius2: Optional[ArrayLike] = None,
+    wall: bool = False,
+    t_vis_law: Optional[str] = None,
+    trajectory: bool = False,
+    t_end: Optional[float] = None,
+) -> Collision:
+    """One head-on collision at impact speed ``v_in`` (Sections 2.6, 4).
+
+    Parameters
+    ----------
+    {material}
+    {radius}
+    t_vis : float, array_like or Quantity
+        Viscoelastic relaxation time T_vis (s, > 0). Give it or ``t_vis_law``.
+    v_in : float, array_like or Quantity
+        Impact speed V_in (m/s, > 0).
+    {k}
+    {radius2}
+    {wall}
+    {t_vis_law}
+    trajectory : bool, optional
+        Record every solver step (scalar arguments only). Default False.
+    t_end : float or Quantity, optional
+        Keep integrating a sticking collision up to this time (s) before deciding that it
+        sticks, to record the whole spiral towards the JKR point (Figure 2).
+
+    Returns
+    -------
+    Collision
+        The outcome (``'sticking'``, ``'double'``, ``'bouncing'``), e, the observed e, V_out
+        (m/s), the contact time (s) and, with ``trajectory``, the states.
+
+    Raises
+    ------
+    {raises}
+
+    Notes
+    -----
+    Start at delta = 0, delta_dot = V_in, beta = (1 + eps) k; end when beta = (1 - eps)/k,
+    eps = 0.01 (Section 2.6), or when the contact is proved never to end (sticking).
+
+    {broadcast}
+
+    Examples
+    --------
+    >>> import stickiness as st
+    >>> st.collide("co2", 60e-6, 1e-9, 0.045).outcome  # Section 4: 4.5 cm/s bounces
+    'bouncing'
+    """
+    m = _args.material(material)
+    wall = _args.geometry(radius2, wall)
+    trajectory = _args.flag("trajectory", trajectory)
+    if v_in is None:
+        raise TypeError("collide() missing required argument: 'v_in' (m/s)")
+    t = _args.t_vis(t_vis, t_vis_law, radius, None)
+    t_end = _args.scalar_option("t_end", t_end)
+    if t_end is not None and not (math.isfinite(t_end) and t_end >= 0):
+        raise ValueError(f"t_end = {t_end!r}: must be >= 0 and finite (s)")
+    b = Broadcast(radius=radius, radius2=radius2, t_vis=t, v_in=v_in, k=k)
+    if trajectory and not b.scalar:
+        raise ValueError("trajectory=True records one collision: give scalar arguments")
+    f = b.flat
+    args = (f["radius"], f.get("radius2"), wall, f["t_vis"], f["v_in"], f["k"], t_end)
+    d = b.call(_core.collide, m, *args, trajectory)
+    b.warn(d["warnings"], stacklevel=3)
+    contact_time = b.out(d["contact_time"])
+    criterion = d["sticking_criterion"]
+    outcome: Any = np.asarray(d["outcome"]).reshape(b.shape)
+    e = b.out(d["e"])
+    observed = b.out(np.where(np.asarray(d["outcome"]) == "bouncing", d["e"], 0.0))
+    if b.scalar:
+        outcome = str(d["outcome"][0])
+        contact_time = None if outcome == "sticking" else contact_time
+        criterion = criterion[0]
+    return Collision(
+        outcome=outcome,
+        e=e,
+        v_out=b.out(d["v_out"]),
+        contact_time=contact_time,
+        v_stick_jkr=b.out(d["v_stick_jkr"]),
+        sticking_criterion=criterion,
+        e_observed=observed,
+        trajectory=d.get("trajectory"),
+    )
+
+
+def _thresholds(core: Any, material: Any, radius: Any, t: Any, k: Any, radius2: Any, wall: Any,
+                v_max: Any, rel_tol: Any, method: Any) -> Any:
+    """The call of a threshold function of the core, and the broadcast it was made on."""
+    m = _args.material(material)
+    wall = _args.geometry(radius2, wall)
+    b = Broadcast(radius=radius, radius2=radius2, t_vis=t, k=k)
+    options = (
+        _args.scalar_option("v_max", v_max),
+        _args.scalar("rel_tol", rel_tol),
+        _args.method(method),
+    )
+    f = b.flat
+    d = b.call(core, m, f["radius"], f.get("radius2"), wall, f["t_vis"], f["k"], *options)
+    b.warn(d["warnings"])
+    return b, d
+
+
+@shared
+def v_stick(
+    material: Union[Material, str],
+    radius: ArrayLike = DEFAULT_RADIUS,
+    t_vis: Optional[ArrayLike] = None,
+    *,
+    k: ArrayLike = DEFAULT_K,
+    radius2: Optional[ArrayLike] = None,
+    wall: bool = False,
+    t_vis_law: Optional[str] = None,
+    v_max: Optional[float] = None,
+    rel_tol: float = DEFAULT_REL_TOL,
+    method: str = "search",
+) -> VStick:
+    """The threshold velocity for sticking V_stick and the onset of double collisions
+    (Sections 4.4, 5).
+
+    Parameters
+    ----------
+    {material}
+    {radius}
+    {t_vis}
+    {k}
+    {radius2}
+    {wall}
+    {t_vis_law}
+    {v_max}
+    {rel_tol}
+    {method}
+
+    Returns
+    -------
+    VStick
+        V_stick (double collision -> bouncing) and V_double_onset (sticking -> double
+        collision), in m/s; NaN without bouncing up to ``no_bouncing_below``; the method that
+        answered.
+
+    Raises
+    ------
+    {raises}
+
+    Notes
+    -----
+    V_stick is where V_out, the approach speed when the contact ends, crosses zero; V_stick >=
+    V_stick,JKR for every T_vis, with equality in the limit T_vis -> 0 (to 1.5e-4: the paper's
+    rounded 14.18). The numbers equal those of the CLI's ``stickiness v-stick``.
+
+    {broadcast}
+
+    Examples
+    --------
+    >>> import stickiness as st
+    >>> round(st.v_stick("co2", 60e-6, 1e-9).v_stick, 5)  # Section 4.4: 4.14 cm/s
+    0.04138
+    >>> r = st.v_stick("co2", 60e-6, 1e-9, method="table")
+    >>> r.method, round(r.v_stick, 5)
+    ('table', 0.04138)
+    """
+    t = _args.t_vis(t_vis, t_vis_law, radius, None)
+    b, d = _thresholds(_core.v_stick, material, radius, t, k, radius2, wall, v_max, rel_tol, method)
+    return VStick(
+        v_stick=b.out(d["v_stick"]),
+        v_double_onset=b.out(d["v_double_onset"]),
+        v_stick_jkr=b.out(d["v_stick_jkr"]),
+        no_bouncing_below=b.out(d["no_bouncing_below"]),
+        t_vis=b.out(b.flat["t_vis"]),
+        v_max=b.out(d["v_max"]),
+        method=b.methods(d["method"]),
+    )
+
+
+@shared
+def v_frag(
+    material: Union[Material, str],
+    radius: ArrayLike = DEFAULT_RADIUS,
+    t_vis: Optional[ArrayLike] = None,
+    *,
+    k: ArrayLike = DEFAULT_K,
+    radius2: Optional[ArrayLike] = None,
+    wall: bool = False,
+    t_vis_law: Optional[str] = None,
+    v_max: Optional[float] = None,
+    rel_tol: float = DEFAULT_REL_TOL,
+    method: str = "search",
+) -> VFrag:
+    """The fragmentation velocity V_frag = 10 V_stick of aggregates of monomers of ``radius``
+    (Section 6).
+
+    Parameters
+    ----------
+    {material}
+    {radius}
+    t_vis : float, array_like or Quantity, optional
+        Relaxation time T_vis (s, >= 0). Default 0: the JKR limit, V_frag,JKR.
+    {k}
+    {radius2}
+    {wall}
+    {t_vis_law}
+    {v_max}
+    {rel_tol}
+    {method}
+
+    Returns
+    -------
+    VFrag
+        V_frag and the monomers' V_stick (m/s), T_vis (s), V_frag,JKR and V_stick,JKR (m/s),
+        the method that answered.
+
+    Raises
+    ------
+    {raises}
+
+    Notes
+    -----
+    V_frag = 10 V_stick (Eq. vfrag of Section 6, from the energy to break a contact, about
+    1.54 F_crit delta_crit, and the number of contacts broken).
+
+    {broadcast}
+
+    Examples
+    --------
+    >>> import stickiness as st
+    >>> round(st.v_frag("co2", 30e-6).v_frag, 3)  # Section 7.1: V_frag,JKR = 0.296 m/s
+    0.296
+    """
+    t = _args.t_vis(t_vis, t_vis_law, radius, 0.0)
+    b, d = _thresholds(_core.v_frag, material, radius, t, k, radius2, wall, v_max, rel_tol, method)
+    fields = [f for f in VFrag.__dataclass_fields__ if f != "method"]
+    return VFrag(**{f: b.out(d[f]) for f in fields}, method=b.methods(d["method"]))
+
+
+@shared
+def fit_t_vis(
+    material: Union[Material, str],
+    radius: ArrayLike = DEFAULT_RADIUS,
+    v_stick: Optional[ArrayLike] = None,
+    *,
+    v_stick_err: Optional[ArrayLike] = None,
+    k: ArrayLike = DEFAULT_K,
+    radius2: Optional[ArrayLike] = None,
+    wall: bool = False,
+    v_max: Optional[float] = None,
+    rel_tol: float = DEFAULT_REL_TOL,
+    method: str = "search",
+) -> TVisFit:
+    """The relaxation time whose V_stick equals a measured one, and the range for its
+    uncertainty (Sections 5.1-5.2).
+
+    Parameters
+    ----------
+    {material}
+    {radius}
+    v_stick : float, array_like or Quantity
+        The measured V_stick (m/s), above V_stick,JKR.
+    v_stick_err : float, array_like or Quantity, optional
+        Its uncertainty dV (m/s, 0 <= dV < V_stick). Default 0.
+    {k}
+    {radius2}
+    {wall}
+    {v_max}
+    {rel_tol}
+    {method}
+
+    Returns
+    -------
+    TVisFit
+        T_vis for V_stick, V_stick - dV and V_stick + dV (s), V_stick,JKR (m/s), the method.
+
+    Raises
+    ------
+    {raises}
+
+    Notes
+    -----
+    V_stick grows monotonically with T_vis from V_stick,JKR, so ln V_stick(T_vis) = ln V has
+    one root in ln T_vis (Illinois). A V_stick at or below V_stick,JKR is reached by no T_vis
+    (``ValueError`` giving V_stick,JKR); a range whose lower end is below it starts at
+    ``t_vis_min = 0``, with a warning.
+
+    {broadcast}
+
+    Examples
+    --------
+    >>> import stickiness as st
+    >>> f = st.fit_t_vis("co2", 60e-6, 0.04, v_stick_err=0.02)  # Section 5.1
+    >>> f"{{f.t_vis_min:.2e}} .. {{f.t_vis_max:.2e}} s"
+    '8.49e-11 .. 1.98e-09 s'
+    """
+    m = _args.material(material)
+    wall = _args.geometry(radius2, wall)
+    if v_stick is None:
+        raise TypeError("fit_t_vis() missing required argument: 'v_stick' (m/s)")
+    err = 0.0 if v_stick_err is None else v_stick_err
+    b = Broadcast(radius=radius, radius2=radius2, v_stick=v_stick, v_stick_err=err, k=k)
+    f = b.flat
+    options = (
+        _args.scalar_option("v_max", v_max),
+        _args.scalar("rel_tol", rel_tol),
+        _args.method(method),
+    )
+    inputs = (f["radius"], f.get("radius2"), wall, f["v_stick"], f["v_stick_err"], f["k"])
+    d = b.call(_core.fit_t_vis, m, *inputs, *options)
+    b.warn(d["warnings"], stacklevel=3)
+    fields = [x for x in TVisFit.__dataclass_fields__ if x != "method"]
+    return TVisFit(**{x: b.out(d[x]) for x in fields}, method=b.methods(d["method"]))

@@ -1,0 +1,213 @@
+"""The result types of the public functions: frozen dataclasses, every field in SI units.
+
+Fields hold a Python ``float`` (or ``str``) when the call's arguments were scalars, and an
+``ndarray`` of the broadcast shape when they were arrays.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Dict, List, Optional, Union
+
+import numpy as np
+
+from ._args import FloatOrArray
+
+#: A string for scalar calls, an array of strings for array calls.
+StrOrArray = Union[str, np.ndarray]
+
+
+@dataclass(frozen=True)
+class JKR:
+    """The JKR contact of two bodies (Arakawa & Krijt 2021, Sections 2.2, 5.1, 6).
+
+    Attributes
+    ----------
+    a_eq : float or ndarray
+        Equilibrium contact radius a_eq (m).
+    delta_eq : float or ndarray
+        Equilibrium mutual approach delta_eq (m).
+    tabor : float or ndarray
+        Tabor parameter mu (dimensionless); JKR theory needs mu >> 1.
+    f_crit : float or ndarray
+        Pull-off force F_crit = 3 pi gamma R / 2 (N).
+    delta_crit : float or ndarray
+        Critical pulling length delta_crit (m).
+    e_stick : float or ndarray
+        E_stick,JKR = m* V_stick,JKR^2 / 2 (J).
+    e_break : float or ndarray
+        E_break,JKR = 1.54 F_crit delta_crit (J).
+    v_stick_jkr : float or ndarray
+        V_stick,JKR = (14.18/m*)^(1/2) (gamma^5 R^4/E*^2)^(1/6) (m/s).
+    """
+
+    #: Equilibrium contact radius a_eq (m).
+    a_eq: FloatOrArray
+    #: Equilibrium mutual approach delta_eq (m).
+    delta_eq: FloatOrArray
+    #: Tabor parameter mu (dimensionless); JKR theory needs mu >> 1.
+    tabor: FloatOrArray
+    #: Pull-off force F_crit = 3 pi gamma R / 2 (N).
+    f_crit: FloatOrArray
+    #: Critical pulling length delta_crit (m).
+    delta_crit: FloatOrArray
+    #: E_stick,JKR = m* V_stick,JKR^2 / 2 (J).
+    e_stick: FloatOrArray
+    #: E_break,JKR = 1.54 F_crit delta_crit (J).
+    e_break: FloatOrArray
+    #: V_stick,JKR (m/s).
+    v_stick_jkr: FloatOrArray
+
+
+@dataclass(frozen=True)
+class Collision:
+    """One head-on collision (Sections 2.6, 4).
+
+    Attributes
+    ----------
+    outcome : str or ndarray of str
+        ``'sticking'``, ``'double'`` or ``'bouncing'``.
+    e : float or ndarray
+        Coefficient of restitution of the first contact, e = -V_out/V_in (dimensionless; 0 for
+        sticking, negative for double collisions).
+    e_observed : float or ndarray
+        The coefficient of restitution an experiment observes (dimensionless): e for bouncing,
+        0 for sticking and double collisions, whose second contact sticks (Section 4.4).
+    v_out : float or ndarray
+        Approach speed when the contact ends (m/s): < 0 the grains separate, > 0 a second
+        contact follows.
+    contact_time : float, ndarray or None
+        Duration of the contact (s); None for a sticking collision (NaN in arrays).
+    v_stick_jkr : float or ndarray
+        V_stick,JKR of the contact (m/s).
+    sticking_criterion : str, list or None
+        How sticking was decided: ``'energy_bound'`` or ``'oscillations'``; None otherwise.
+    trajectory : dict of ndarray or None
+        With ``trajectory=True``: ``t`` (s), ``a``, ``delta`` (m), ``delta_dot`` (m/s),
+        ``beta`` (dimensionless) and ``energy`` (J) at every solver step; None otherwise.
+    """
+
+    #: ``'sticking'``, ``'double'`` or ``'bouncing'`` (an array of these for array inputs).
+    outcome: StrOrArray
+    #: Coefficient of restitution e = -V_out/V_in (0 for sticking, negative for double).
+    e: FloatOrArray
+    #: Approach speed when the contact ends (m/s): < 0 separate, > 0 a second contact follows.
+    v_out: FloatOrArray
+    #: Duration of the contact (s); None for a sticking collision (NaN in arrays).
+    contact_time: Union[None, float, np.ndarray]
+    #: V_stick,JKR of the contact (m/s).
+    v_stick_jkr: FloatOrArray
+    #: How sticking was decided: ``'energy_bound'`` or ``'oscillations'``; None otherwise.
+    sticking_criterion: Union[None, str, List[Optional[str]]]
+    #: The observed coefficient of restitution: e for bouncing, 0 otherwise (Section 4.4).
+    e_observed: FloatOrArray
+    #: With ``trajectory=True``: ``t``, ``a``, ``delta``, ``delta_dot``, ``beta``, ``energy``.
+    trajectory: Optional[Dict[str, np.ndarray]] = None
+
+
+@dataclass(frozen=True)
+class VStick:
+    """The sticking thresholds (Sections 4.4, 5).
+
+    Attributes
+    ----------
+    v_stick : float or ndarray
+        V_stick, the double collision -> bouncing transition (m/s); NaN without bouncing up to
+        ``no_bouncing_below``.
+    v_double_onset : float or ndarray
+        The sticking -> double collision transition (m/s); NaN when every collision up to the
+        limit sticks.
+    v_stick_jkr : float or ndarray
+        V_stick,JKR, the T_vis -> 0 limit (m/s).
+    no_bouncing_below : float or ndarray
+        The search limit where no collision bounced (m/s); NaN where bouncing was found.
+    t_vis : float or ndarray
+        The relaxation time used (s).
+    v_max : float or ndarray
+        The highest impact speed searched (m/s).
+    method : str or ndarray of str
+        Which answered: ``'search'`` (the exact search) or ``'table'`` (the master table).
+    """
+
+    #: V_stick (m/s); NaN without bouncing up to ``no_bouncing_below``.
+    v_stick: FloatOrArray
+    #: Sticking -> double collision (m/s); NaN when every collision up to the limit sticks.
+    v_double_onset: FloatOrArray
+    #: V_stick,JKR, the T_vis -> 0 limit (m/s).
+    v_stick_jkr: FloatOrArray
+    #: The search limit where no collision bounced (m/s); NaN where bouncing was found.
+    no_bouncing_below: FloatOrArray
+    #: The relaxation time used (s).
+    t_vis: FloatOrArray
+    #: The highest impact speed searched (m/s).
+    v_max: FloatOrArray
+    #: Which answered: ``'search'`` or ``'table'``.
+    method: StrOrArray
+
+
+@dataclass(frozen=True)
+class TVisFit:
+    """Relaxation times reproducing a measured V_stick (Sections 5.1-5.2).
+
+    Attributes
+    ----------
+    t_vis : float or ndarray
+        T_vis for the measured V_stick (s).
+    t_vis_min : float or ndarray
+        T_vis for V_stick - dV (s); 0 when that is at or below V_stick,JKR.
+    t_vis_max : float or ndarray
+        T_vis for V_stick + dV (s).
+    v_stick_jkr : float or ndarray
+        V_stick,JKR of the contact (m/s).
+    method : str or ndarray of str
+        ``'table'`` when the master table gave every V_stick the fit needed, else ``'search'``.
+    """
+
+    #: T_vis for the measured V_stick (s).
+    t_vis: FloatOrArray
+    #: T_vis for V_stick - dV (s); 0 when that is at or below V_stick,JKR.
+    t_vis_min: FloatOrArray
+    #: T_vis for V_stick + dV (s).
+    t_vis_max: FloatOrArray
+    #: V_stick,JKR of the contact (m/s).
+    v_stick_jkr: FloatOrArray
+    #: Which answered: ``'search'`` or ``'table'``.
+    method: StrOrArray
+
+
+@dataclass(frozen=True)
+class VFrag:
+    """The fragmentation velocity of aggregates, V_frag = 10 V_stick (Section 6).
+
+    Attributes
+    ----------
+    v_frag : float or ndarray
+        V_frag (m/s); NaN without bouncing up to ``no_bouncing_below``.
+    v_stick : float or ndarray
+        V_stick of the monomers (m/s); NaN as ``v_frag``.
+    t_vis : float or ndarray
+        The relaxation time used (s); 0 is the JKR limit.
+    v_frag_jkr : float or ndarray
+        V_frag,JKR = 10 V_stick,JKR (m/s).
+    v_stick_jkr : float or ndarray
+        V_stick,JKR (m/s).
+    no_bouncing_below : float or ndarray
+        The search limit where no collision bounced (m/s); NaN where bouncing was found.
+    method : str or ndarray of str
+        Which answered: ``'search'`` or ``'table'``.
+    """
+
+    #: V_frag (m/s); NaN without bouncing up to ``no_bouncing_below``.
+    v_frag: FloatOrArray
+    #: V_stick of the monomers (m/s); NaN as ``v_frag``.
+    v_stick: FloatOrArray
+    #: The relaxation time used (s); 0 is the JKR limit.
+    t_vis: FloatOrArray
+    #: V_frag,JKR = 10 V_stick,JKR (m/s).
+    v_frag_jkr: FloatOrArray
+    #: V_stick,JKR (m/s).
+    v_stick_jkr: FloatOrArray
+    #: The search limit where no collision bounced (m/s); NaN where bouncing was found.
+    no_bouncing_below: FloatOrArray
+    #: Which answered: ``'search'`` or ``'table'``.
+    method: StrOrArray

@@ -1,0 +1,160 @@
+//! The conversions shared by the vectorised functions of `stickiness._core`: flat `float64`
+//! arrays of one length in (the package broadcasts them), the bodies of each element, one crack
+//! law per k, the warnings as `(index, kind, message)`, and a dict of flat arrays out (NaN where
+//! a value does not exist). The settings are those of the CLI, so the numbers are bit-identical
+//! to its `--json` output.
+
+use crate::error::Error;
+use crate::material::Material;
+use numpy::{PyArray1, PyReadonlyArray1};
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::collections::HashMap;
+use thresholds::{
+    Contact, CrackLaw, Geometry, GreenwoodError, OutOfRange, SearchOptions, ThresholdMethod,
+    Warning,
+};
+
+pub type Array<'py> = PyReadonlyArray1<'py, f64>;
+
+/// The contiguous data of a flat array argument.
+pub fn data<'a>(a: &'a Array<'_>, name: &str) -> PyResult<&'a [f64]> {
+    a.as_slice()
+        .map_err(|_| PyValueError::new_err(format!("{name}: expected a contiguous float64 array")))
+}
+
+/// The common length of the flat arguments (the package broadcasts them first).
+pub fn common_len(lens: &[(&str, usize)]) -> PyResult<usize> {
+    let n = lens.first().map_or(0, |l| l.1);
+    match lens.iter().find(|l| l.1 != n) {
+        Some((name, len)) => Err(PyValueError::new_err(format!(
+            "{name}: length {len} differs from {n} (the arguments must be broadcast to one shape)"
+        ))),
+        None => Ok(n),
+    }
+}
+
+/// The geometry arguments: `radius`, optional `radius2`, `wall`.
+pub struct Bodies<'a> {
+    /// R1 of each element (m).
+    pub radius: &'a [f64],
+    radius2: Option<&'a [f64]>,
+    wall: bool,
+}
+
+impl<'a> Bodies<'a> {
+    /// The geometry arguments, `radius2` (if given) as long as `radius`.
+    pub fn new(
+        radius: &'a Array<'_>,
+        radius2: Option<&'a Array<'_>>,
+        wall: bool,
+    ) -> PyResult<Self> {
+        let radius = data(radius, "radius")?;
+        let radius2 = radius2.map(|r| data(r, "radius2")).transpose()?;
+        if let Some(r2) = radius2 {
+            common_len(&[("radius", radius.len()), ("radius2", r2.len())])?;
+        }
+        Ok(Self {
+            radius,
+            radius2,
+            wall,
+        })
+    }
+
+    pub fn geometry(&self, i: usize) -> Geometry {
+        let r1 = self.radius[i];
+        match (self.wall, self.radius2) {
+            (true, _) => Geometry::wall(r1),
+            (false, Some(r2)) => Geometry::spheres(r1, r2[i]),
+            (false, None) => Geometry::identical(r1),
+        }
+    }
+
+    pub fn contact(&self, material: &Material, i: usize) -> Result<Contact, Error> {
+        Contact::new(material.inner, self.geometry(i)).map_err(|e| Error::from_contact(e, i))
+    }
+}
+
+/// One `CrackLaw` per distinct k (each table takes 0.17 ms to build and is shared).
+pub struct Laws(HashMap<u64, Result<CrackLaw, OutOfRange>>);
+
+impl Laws {
+    pub fn new(k: &[f64]) -> Self {
+        let mut map = HashMap::new();
+        for &x in k {
+            map.entry(x.to_bits()).or_insert_with(|| {
+                CrackLaw::new(x).map_err(|e| match e {
+                    GreenwoodError::OutOfRange(bad) => bad,
+                })
+            });
+        }
+        Self(map)
+    }
+
+    pub fn get(&self, k: f64, i: usize) -> Result<&CrackLaw, Error> {
+        match self.0.get(&k.to_bits()) {
+            Some(Ok(law)) => Ok(law),
+            Some(Err(bad)) => Err(Error::Input {
+                bad: bad.clone(),
+                index: i,
+            }),
+            // every k of the call was tabulated in `new`
+            None => Err(Error::Input {
+                bad: OutOfRange::new("k", k, "0 < k < 1", "dimensionless"),
+                index: i,
+            }),
+        }
+    }
+}
+
+/// `(index, kind, message)` of each warning of element `i`.
+pub type Warned = Vec<(usize, &'static str, String)>;
+
+pub fn warned(i: usize, warnings: impl IntoIterator<Item = Warning>) -> Warned {
+    warnings
+        .into_iter()
+        .map(|w| {
+            let kind = match w {
+                Warning::JkrOutsideValidity { .. } => "tabor",
+                Warning::ImplausibleRadius { .. } => "radius",
+                Warning::ImplausibleSpeed { .. } => "speed",
+            };
+            (i, kind, w.to_string())
+        })
+        .collect()
+}
+
+/// Columns of f64 results and the warnings, as a dict of flat arrays.
+pub fn columns<'py, const N: usize>(
+    py: Python<'py>,
+    names: [&str; N],
+    rows: &[([f64; N], Warned)],
+) -> PyResult<Bound<'py, PyDict>> {
+    let dict = PyDict::new(py);
+    for (j, name) in names.iter().enumerate() {
+        let col: Vec<f64> = rows.iter().map(|r| r.0[j]).collect();
+        dict.set_item(*name, PyArray1::from_vec(py, col))?;
+    }
+    let warnings: Warned = rows.iter().flat_map(|r| r.1.iter().cloned()).collect();
+    dict.set_item("warnings", warnings)?;
+    Ok(dict)
+}
+
+pub fn or_nan(v: Option<f64>) -> f64 {
+    v.unwrap_or(f64::NAN)
+}
+
+/// The search settings of a call, as the CLI's: only `rel_tol`, `v_max` and `method`
+/// (`"search"` or `"table"`) differ from the defaults.
+pub fn search_options(v_max: Option<f64>, rel_tol: f64, method: &str) -> PyResult<SearchOptions> {
+    let method = ThresholdMethod::from_name(method).ok_or_else(|| {
+        PyValueError::new_err(format!("method = '{method}': must be 'search' or 'table'"))
+    })?;
+    Ok(SearchOptions {
+        rel_tol,
+        v_max,
+        method,
+        ..SearchOptions::default()
+    })
+}

@@ -1,0 +1,89 @@
+"""Junk in, a clear exception out: every public function fed None, strings, complex numbers,
+dicts, nested and ragged lists, NaN, infinities, huge and tiny numbers, bools and arrays of the
+wrong shape raises only TypeError or ValueError naming the argument (or SolverError for a
+computation that failed), never another exception, a crash or a hang (hypothesis)."""
+
+import math
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as s
+
+import stickiness as st
+from stickiness import dustpy as sd
+
+JUNK = s.one_of(
+    s.none(),
+    s.text(max_size=6),
+    s.complex_numbers(allow_nan=True, allow_infinity=True),
+    s.dictionaries(s.text(max_size=2), s.integers(), max_size=2),
+    s.lists(s.lists(s.floats(allow_nan=True), max_size=3), max_size=3),
+    s.sampled_from([math.nan, math.inf, -math.inf, 1e300, -1e300, 1e-300, 0.0, -1.0, True]),
+    s.builds(lambda n: np.zeros((n, 7)), s.integers(0, 3)),
+    s.floats(allow_nan=True, allow_infinity=True),
+    s.integers(min_value=-(10**30), max_value=10**30),
+)
+
+CO2 = st.Material.co2()
+
+#: Each public function with valid arguments; one of them at a time is replaced by junk.
+CALLS = {
+    "crack_speed": (st.crack_speed, {"k": 0.01, "beta": 0.5}),
+    "t_vis_law": (st.t_vis_law, {"law": "co2", "radius": 1e-6}),
+    "jkr": (st.jkr, {"material": CO2, "radius": 60e-6, "radius2": None, "wall": False}),
+    "collide": (
+        st.collide,
+        {"material": CO2, "radius": 60e-6, "t_vis": 1e-9, "v_in": 0.045, "k": 0.01,
+         "radius2": None, "wall": False, "t_vis_law": None, "trajectory": False, "t_end": None},
+    ),
+    "v_stick": (
+        st.v_stick,
+        {"material": CO2, "radius": 60e-6, "t_vis": 1e-9, "k": 0.01, "radius2": None,
+         "wall": False, "t_vis_law": None, "v_max": None, "rel_tol": 1e-6, "method": "table"},
+    ),
+    "v_frag": (
+        st.v_frag,
+        {"material": CO2, "radius": 1e-7, "t_vis": 1e-12, "k": 0.01, "radius2": None,
+         "wall": False, "t_vis_law": None, "v_max": None, "rel_tol": 1e-6, "method": "table"},
+    ),
+    "fit_t_vis": (
+        st.fit_t_vis,
+        {"material": CO2, "radius": 60e-6, "v_stick": 0.04, "v_stick_err": 0.02, "k": 0.01,
+         "radius2": None, "wall": False, "v_max": None, "rel_tol": 1e-6, "method": "table"},
+    ),
+    "sweep": (
+        st.sweep,
+        {"material": "co2", "radius": 60e-6, "t_vis": 1e-9, "gamma_sv": None, "k": 0.01,
+         "radius2": None, "wall": False, "t_vis_law": None, "v_max": None, "rel_tol": 1e-6,
+         "method": "table", "progress": False, "chunks_per_task": 1},
+    ),
+    "Material": (st.Material, {"gamma_sv": 0.08, "young": 1e10, "poisson": 0.26, "density": 1560.0}),
+    "Material.replace": (CO2.replace, {"density": 1650.0}),
+    "vfrag_profile": (
+        sd.vfrag_profile,
+        {"T": np.array([50.0, 100.0]), "monomer_radius": 1e-7, "t_h2o": 150.0, "t_co2": 70.0,
+         "v_frag_refractory": 1.0, "width": None},
+    ),
+}
+
+
+@pytest.mark.parametrize("name", sorted(CALLS))
+def test_junk_gives_clear_errors(name):
+    fn, valid = CALLS[name]
+
+    @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+    @given(argument=s.sampled_from(sorted(valid)), junk=JUNK)
+    def one(argument, junk):
+        kwargs = dict(valid, **{argument: junk})
+        try:
+            fn(**kwargs)
+        except (TypeError, ValueError) as e:
+            # the message names the argument (the law of Material.named by its name)
+            assert argument in str(e) or (argument == "law" and "t_vis_law" in str(e)), (
+                f"{name}({argument}={junk!r}): {type(e).__name__}: {e}"
+            )
+        except st.SolverError:
+            pass
+
+    one()
