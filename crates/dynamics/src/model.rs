@@ -67,6 +67,15 @@ pub fn beta(x: f64, y: f64) -> f64 {
     beta_with_gradient(x, y).0
 }
 
+/// `4x (beta(x, y) - beta_end) = (3x^2 - y)^2 - 4x beta_end`: the sign of `beta - beta_end` for
+/// a contact (x > 0), continuous where beta is not (beta -> +inf as x -> 0+), and >= 0 for
+/// x <= 0. Its zero places the end of contact inside a step that jumped past x = 0.
+#[inline]
+pub fn end_gap(x: f64, y: f64, beta_end: f64) -> f64 {
+    let q = 3.0 * x * x - y;
+    q * q - 4.0 * x * beta_end
+}
+
 /// Total energy in units of `E0` (see the module docs).
 #[inline]
 pub fn energy(x: f64, y: f64, p: f64) -> f64 {

@@ -445,3 +445,29 @@ fn crack_speeds_beyond_the_limit_are_refused() {
     let t_min = 1e-16 * c.dimensionless(1e-16).c_a / dynamics::MAX_CRACK_SPEED_NUMBER;
     assert!(Collider::new(c, &law, t_min * 1.001).is_ok());
 }
+
+/// A coarse step can jump past the end of contact to a vanished contact radius (a < 0, where
+/// beta is negative although it grows without bound as a -> 0+). Two CO2 grains of 2.18 um at
+/// T_vis = 3.4e-10 s and 55 m/s, beyond the no-bouncing cliff (c_D = 0.82), at rtol 1e-4: the
+/// solver crept on at a < 0 for 2e6 steps. Truth: the same collision at rtol 1e-9, a double
+/// collision with e = -1.1337e-3; at 1e-4 it must end the same way, to the coarse tolerance.
+#[test]
+fn a_step_past_the_vanishing_contact_ends_it() {
+    let c = Contact::new(Material::co2(), Geometry::identical(2.1828606522255834e-6)).unwrap();
+    let (law, t_vis, v_in) = (law(), 3.4295490173049875e-10, 54.99992174913366);
+    let run = |rtol: f64| {
+        let opts = SolverOptions {
+            max_steps: 20_000,
+            ..SolverOptions::at_rtol(rtol)
+        };
+        let col = Collider::new(c, &law, t_vis).unwrap().with_options(opts);
+        col.unwrap().collide(v_in).unwrap()
+    };
+    let fine = run(1e-9);
+    assert_eq!(fine.outcome, Outcome::DoubleCollision);
+    for rtol in [1e-3, 1e-4, 1e-5] {
+        let coarse = run(rtol);
+        assert_eq!(coarse.outcome, Outcome::DoubleCollision, "rtol {rtol}");
+        assert!((coarse.e / fine.e - 1.0).abs() < 0.2, "rtol {rtol}: {} vs {}", coarse.e, fine.e);
+    }
+}
