@@ -7,10 +7,10 @@
 //! Each point draws gamma_SV (0.01-0.3 J/m^2), E (0.5-200 GPa), the density (500-5000 kg/m^3)
 //! and the reduced radius R (5 nm - 1 cm) log-uniformly, nu (0.1-0.45) uniformly, two identical
 //! spheres (R1 = 2R) or a sphere on a wall (R1 = R), k = 0.01 or 0.02, and T_vis log-uniformly
-//! from 1e-16 s to 1e-3 s (beyond the cliff for every grain). Where the table answers, its
-//! V_stick and V_double_onset are compared with the default exact search; prints how many
-//! points the table answered, the search failed at, and the percentiles of the relative
-//! differences.
+//! from 1e-16 s to 1e-3 s (beyond the cliff for every grain), until the table has answered at
+//! the given number of points. There its V_stick and V_double_onset are compared with the
+//! default exact search; prints how many points were drawn, how many the search refused or
+//! failed at, and the percentiles of the relative differences.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use thresholds::{
@@ -47,7 +47,9 @@ fn main() {
     let (mut answered, mut failed, mut wall_points) = (0, 0, 0);
     let (mut d_stick, mut d_onset) = (Vec::new(), Vec::new());
     let mut worst = (0.0, String::new());
-    for _ in 0..n {
+    let mut drawn = 0;
+    while answered < n {
+        drawn += 1;
         let m = Material {
             gamma_sv: rng.log_uniform(0.01, 0.3),
             young: rng.log_uniform(0.5e9, 200e9),
@@ -109,7 +111,7 @@ fn main() {
     d_stick.sort_by(f64::total_cmp);
     d_onset.sort_by(f64::total_cmp);
     println!(
-        "{n} points: the table answered {answered} ({wall_points} on a wall), the search failed at {failed} of those"
+        "{drawn} points drawn: the table answered {answered} ({wall_points} on a wall), the search refused or failed at {failed} of those"
     );
     for (name, d) in [("V_stick", &d_stick), ("V_double_onset", &d_onset)] {
         println!(
