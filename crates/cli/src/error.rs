@@ -84,13 +84,19 @@ impl From<ThresholdsError> for CliError {
         match (e.out_of_range(), e) {
             (Some(o), _) => o.into(),
             (None, ThresholdsError::Dynamics(d)) => d.into(),
-            (None, ThresholdsError::Unreachable { v_stick, t_vis_max }) => {
-                CliError::Usage(format!(
-                    "--v-stick = {} m/s is not reached by any T_vis up to {} s",
-                    number(v_stick),
-                    number(t_vis_max)
-                ))
-            }
+            (
+                None,
+                ThresholdsError::Unreachable {
+                    v_stick,
+                    t_vis_max,
+                    reduced_radius,
+                },
+            ) => CliError::Usage(format!(
+                "--v-stick = {} m/s is not reached by any T_vis up to {} s for these grains (--radius: reduced radius R = {} m; the T_vis of a given V_stick grows roughly as R^(7/6))",
+                number(v_stick),
+                number(t_vis_max),
+                number(reduced_radius)
+            )),
             (None, e) => CliError::Compute(e.to_string()),
         }
     }

@@ -69,8 +69,9 @@ impl Collider {
                 "t_vis",
                 t_vis,
                 format!(
-                    ">= {} s for these grains: below it the crack-speed number c_a exceeds {:e} and the collision cannot be integrated (V_stick has reached its T_vis -> 0 limit there to about 1e-6; the master table answers below it)",
+                    ">= {} s for these grains (reduced radius R = {} m; the bound grows as sqrt(R)): below it the crack-speed number c_a exceeds {:e} and the collision cannot be integrated (V_stick has reached its T_vis -> 0 limit there to about 1e-6; the master table answers below it)",
                     numerics::format::number(t_min),
+                    numerics::format::number(contact.reduced_radius()),
                     MAX_CRACK_SPEED_NUMBER
                 ),
                 "s",

@@ -52,15 +52,18 @@ pub enum ThresholdsError {
     },
     /// A measured V_stick above what any relaxation time up to `t_vis_max` gives.
     #[error(
-        "v_stick = {} m/s is not reached for T_vis up to {} s",
+        "v_stick = {} m/s is not reached for T_vis up to {} s by these grains (reduced radius R = {} m; the T_vis of a given V_stick grows roughly as R^(7/6), the drag number c_D being proportional to T_vis R^(-7/6))",
         number(*v_stick),
-        number(*t_vis_max)
+        number(*t_vis_max),
+        number(*reduced_radius)
     )]
     Unreachable {
         /// The measured value (m/s).
         v_stick: f64,
         /// Largest relaxation time tried (s).
         t_vis_max: f64,
+        /// Reduced radius R of the contact (m).
+        reduced_radius: f64,
     },
 }
 

@@ -240,6 +240,7 @@ fn solve(
                 return Err(ThresholdsError::Unreachable {
                     v_stick: v_target,
                     t_vis_max: T_VIS_CEILING,
+                    reduced_radius: contact.reduced_radius(),
                 });
             }
             f_hi = f(hi)?;
