@@ -468,6 +468,11 @@ fn a_step_past_the_vanishing_contact_ends_it() {
     for rtol in [1e-3, 1e-4, 1e-5] {
         let coarse = run(rtol);
         assert_eq!(coarse.outcome, Outcome::DoubleCollision, "rtol {rtol}");
-        assert!((coarse.e / fine.e - 1.0).abs() < 0.2, "rtol {rtol}: {} vs {}", coarse.e, fine.e);
+        assert!(
+            (coarse.e / fine.e - 1.0).abs() < 0.2,
+            "rtol {rtol}: {} vs {}",
+            coarse.e,
+            fine.e
+        );
     }
 }
