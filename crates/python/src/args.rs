@@ -79,15 +79,43 @@ impl<'a> Bodies<'a> {
 /// One `CrackLaw` per distinct k (each table takes 0.17 ms to build and is shared).
 pub struct Laws(HashMap<u64, Result<CrackLaw, OutOfRange>>);
 
+/// Crack laws kept across calls: a call of a few elements (a sampler's step asks V_stick of 8
+/// walkers thousands of times) would otherwise spend 0.2 ms building its law, 100 times the
+/// table's answers. At most this many k are kept (then the cache starts afresh), so calls
+/// with random k cannot grow it without bound; a law's tables are a few hundred kB.
+const CACHED_LAWS: usize = 16;
+
+/// The process-wide cache of [`CACHED_LAWS`] crack laws, by the bits of k.
+static LAW_CACHE: std::sync::Mutex<Option<HashMap<u64, CrackLaw>>> = std::sync::Mutex::new(None);
+
+/// The crack law of `k`, from the cache or built (and then cached).
+fn law(k: f64) -> Result<CrackLaw, OutOfRange> {
+    let key = k.to_bits();
+    if let Some(law) = LAW_CACHE
+        .lock()
+        .ok()
+        .and_then(|c| c.as_ref().and_then(|m| m.get(&key).cloned()))
+    {
+        return Ok(law);
+    }
+    let law = CrackLaw::new(k).map_err(|e| match e {
+        GreenwoodError::OutOfRange(bad) => bad,
+    })?;
+    if let Ok(mut cache) = LAW_CACHE.lock() {
+        let map = cache.get_or_insert_with(HashMap::new);
+        if map.len() >= CACHED_LAWS {
+            map.clear();
+        }
+        map.insert(key, law.clone());
+    }
+    Ok(law)
+}
+
 impl Laws {
     pub fn new(k: &[f64]) -> Self {
         let mut map = HashMap::new();
         for &x in k {
-            map.entry(x.to_bits()).or_insert_with(|| {
-                CrackLaw::new(x).map_err(|e| match e {
-                    GreenwoodError::OutOfRange(bad) => bad,
-                })
-            });
+            map.entry(x.to_bits()).or_insert_with(|| law(x));
         }
         Self(map)
     }

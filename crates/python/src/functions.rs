@@ -49,6 +49,30 @@ pub fn jkr<'py>(
     columns(py, thresholds::JKR_QUANTITIES.map(|q| q.0), &rows)
 }
 
+/// The two dimensionless numbers of a collision (`Contact::dimensionless`): the drag number
+/// c_d and the crack-speed number c_a, and the JKR time unit t0 (s).
+#[pyfunction]
+#[pyo3(signature = (material, radius, radius2, wall, t_vis))]
+pub fn dimensionless<'py>(
+    py: Python<'py>,
+    material: Material,
+    radius: Array<'py>,
+    radius2: Option<Array<'py>>,
+    wall: bool,
+    t_vis: Array<'py>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
+    let t_vis = data(&t_vis, "t_vis")?;
+    let n = common_len(&[("radius", bodies.radius.len()), ("t_vis", t_vis.len())])?;
+    let rows = parallel::map(py, n, |i| {
+        let c = bodies.contact(&material, i)?;
+        numerics::positive("t_vis", t_vis[i], "s").map_err(|bad| Error::Input { bad, index: i })?;
+        let d = c.dimensionless(t_vis[i]);
+        Ok(([d.c_d, d.c_a, c.t0()], warned(i, c.warnings())))
+    })?;
+    columns(py, ["c_d", "c_a", "t0"], &rows)
+}
+
 /// One head-on collision per element: outcome, e, v_out (m/s), contact_time (s; NaN for
 /// sticking), v_stick_jkr (m/s); with `trajectory` (one element only) the recorded states.
 #[pyfunction]
@@ -104,6 +128,11 @@ pub fn collide<'py>(
         runs.iter().map(f).collect()
     };
     dict.set_item("e", PyArray1::from_vec(py, column(&|r| r.0.e)))?;
+    // what an experiment sees: e = 0 for sticking and double collisions (Section 4.4)
+    dict.set_item(
+        "e_observed",
+        PyArray1::from_vec(py, column(&|r| r.0.observed_e())),
+    )?;
     dict.set_item("v_out", PyArray1::from_vec(py, column(&|r| r.0.v_out)))?;
     dict.set_item(
         "contact_time",

@@ -8,12 +8,38 @@ use std::path::PathBuf;
 
 /// The four material constants of the model, in SI units.
 ///
-/// `Material(gamma_sv, young, poisson, density)`: surface free energy gamma_SV (J/m^2; the
-/// contact uses the work of adhesion 2 gamma_SV), Young's modulus E (Pa), Poisson ratio nu
-/// (dimensionless, -1 < nu < 0.5) and density rho (kg/m^3). `Material.co2()` and
-/// `Material.h2o()` are the paper's ices (Arakawa & Krijt 2021, Section 3; CO2's E and nu from
-/// its sound speeds), `Material.from_json(path)` reads `{"gamma_sv", "young", "poisson",
-/// "density"}`. Materials compare by value, hash, and pickle.
+/// Parameters
+/// ----------
+/// gamma_sv : float or Quantity
+///     Surface free energy gamma_SV (J/m^2, > 0). The contact uses the work of adhesion
+///     gamma = 2 gamma_SV.
+/// young : float or Quantity
+///     Young's modulus E (Pa, > 0).
+/// poisson : float
+///     Poisson ratio nu (dimensionless, -1 < nu < 0.5).
+/// density : float or Quantity
+///     Density rho (kg/m^3, > 0).
+///
+/// Raises
+/// ------
+/// ValueError
+///     A constant out of its range, or a Quantity of the wrong dimension (the message names it).
+///
+/// Notes
+/// -----
+/// ``Material.co2()`` and ``Material.h2o()`` are the paper's ices (Arakawa & Krijt 2021,
+/// Section 3; CO2's E and nu from its sound speeds), ``Material.named(name_or_path)`` either of
+/// them or a JSON file, ``Material.from_json(path)`` reads ``{"gamma_sv", "young", "poisson",
+/// "density"}``. Materials compare by value, hash, and pickle.
+///
+/// Examples
+/// --------
+/// >>> import stickiness as st
+/// >>> co2 = st.Material.co2()
+/// >>> co2.gamma_sv, round(co2.young / 1e9, 3), co2.density
+/// (0.08, 10.708, 1560.0)
+/// >>> co2.replace(gamma_sv=0.1) == st.Material(0.1, co2.young, co2.poisson, co2.density)
+/// True
 #[pyclass(frozen, module = "stickiness", name = "Material", from_py_object)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Material {
@@ -86,6 +112,10 @@ impl Material {
 
     /// CO2 ice (Section 3): gamma_SV = 0.08 J/m^2; E = 10.708 GPa and nu = 0.26066 from the
     /// sound speeds 2900 and 1650 m/s at rho = 1560 kg/m^3.
+    ///
+    /// Returns
+    /// -------
+    /// Material
     #[staticmethod]
     fn co2() -> Self {
         Self {
@@ -94,6 +124,10 @@ impl Material {
     }
 
     /// H2O ice (Sections 3, 5.2): gamma_SV = 0.1 J/m^2, E = 7 GPa, nu = 0.25, rho = 930 kg/m^3.
+    ///
+    /// Returns
+    /// -------
+    /// Material
     #[staticmethod]
     fn h2o() -> Self {
         Self {
@@ -101,7 +135,21 @@ impl Material {
         }
     }
 
-    /// A preset by name (`co2`, `h2o`, any case) or a JSON file's path.
+    /// A preset by name or a material file.
+    ///
+    /// Parameters
+    /// ----------
+    /// name : str
+    ///     ``'co2'`` or ``'h2o'`` (any case), or the path of a JSON material file.
+    ///
+    /// Returns
+    /// -------
+    /// Material
+    ///
+    /// Raises
+    /// ------
+    /// OSError
+    ///     No preset of that name and no such file.
     #[staticmethod]
     fn named(name: &str) -> PyResult<Self> {
         thresholds::Material::from_name_or_path(name)
@@ -109,9 +157,23 @@ impl Material {
             .map_err(|e| Error::from_contact(e, 0).into())
     }
 
-    /// Reads a JSON material file `{"gamma_sv": .., "young": .., "poisson": .., "density": ..}`
-    /// (SI). A missing file raises `FileNotFoundError`; a bad or missing field `ValueError` naming
-    /// the file and the field.
+    /// Reads a JSON material file.
+    ///
+    /// Parameters
+    /// ----------
+    /// path : str or os.PathLike
+    ///     A file ``{"gamma_sv": .., "young": .., "poisson": .., "density": ..}`` (SI).
+    ///
+    /// Returns
+    /// -------
+    /// Material
+    ///
+    /// Raises
+    /// ------
+    /// FileNotFoundError
+    ///     A missing file.
+    /// ValueError
+    ///     A bad or missing field (the message names the file and the field).
     #[staticmethod]
     fn from_json(path: PathBuf) -> PyResult<Self> {
         thresholds::Material::from_json_file(&path)
@@ -119,7 +181,22 @@ impl Material {
             .map_err(|e| Error::from_contact(e, 0).into())
     }
 
-    /// A copy with some constants replaced (SI), validated.
+    /// A copy with some constants replaced, validated.
+    ///
+    /// Parameters
+    /// ----------
+    /// gamma_sv, young, poisson, density : float or Quantity, optional
+    ///     The new values (SI: J/m^2, Pa, dimensionless, kg/m^3); the others are kept.
+    ///
+    /// Returns
+    /// -------
+    /// Material
+    ///
+    /// Examples
+    /// --------
+    /// >>> import stickiness as st
+    /// >>> st.Material.h2o().replace(gamma_sv=0.19).gamma_sv
+    /// 0.19
     #[pyo3(signature = (*, gamma_sv=None, young=None, poisson=None, density=None))]
     fn replace(
         &self,

@@ -23,6 +23,7 @@ __all__ = [
     "__version__",
     "collide",
     "crack_speed",
+    "dimensionless",
     "fit_t_vis",
     "jkr",
     "parallel_batch",
@@ -96,11 +97,20 @@ class JkrColumns(TypedDict):
     v_stick_jkr: _F  # V_stick,JKR (m/s)
     warnings: _Warnings
 
+class DimensionlessColumns(TypedDict):
+    """The columns of :func:`dimensionless` (flat arrays)."""
+
+    c_d: _F  # drag number c_D (dimensionless)
+    c_a: _F  # crack-speed number c_a (dimensionless)
+    t0: _F  # JKR time unit (s)
+    warnings: _Warnings
+
 class CollisionColumns(TypedDict, total=False):
     """The columns of :func:`collide` (flat, SI)."""
 
     outcome: List[str]  # 'sticking', 'double' or 'bouncing'
     e: _F  # -V_out/V_in (dimensionless)
+    e_observed: _F  # e as observed: e of bouncing, 0 for sticking and double collisions
     v_out: _F  # approach speed at the end of contact (m/s)
     contact_time: _F  # duration of the contact (s; NaN for sticking)
     v_stick_jkr: _F  # V_stick,JKR (m/s)
@@ -145,6 +155,9 @@ def crack_speed(k: _F, beta: _F) -> _F: ...
 def t_vis_law(law: str, radius: _F) -> _F: ...
 def parallel_batch() -> int: ...
 def jkr(material: Material, radius: _F, radius2: Optional[_F], wall: bool) -> JkrColumns: ...
+def dimensionless(
+    material: Material, radius: _F, radius2: Optional[_F], wall: bool, t_vis: _F
+) -> DimensionlessColumns: ...
 def collide(
     material: Material,
     radius: _F,
