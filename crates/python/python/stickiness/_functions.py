@@ -1,6 +1,6 @@
-"""The public functions: the crack law, the JKR contact, one collision, the thresholds, the fit
-and the size laws. Each converts its arguments (:mod:`stickiness._args`), calls the compiled
-core and builds its result (:mod:`stickiness._results`); SI units in and out.
+"""The collision functions: one collision, the thresholds, the T_vis fit and V_frag. Each
+converts its arguments (:mod:`stickiness._args`), calls the compiled core and builds its result
+(:mod:`stickiness._results`); SI units in and out.
 """
 
 from __future__ import annotations
@@ -11,128 +11,10 @@ from typing import Any, Optional, Union
 import numpy as np
 
 from . import _args, _core
-from ._args import ArrayLike, Broadcast, FloatOrArray
+from ._args import ArrayLike, Broadcast
 from ._core import DEFAULT_K, DEFAULT_RADIUS, DEFAULT_REL_TOL, Material
 from ._docs import shared
-from ._results import JKR, Collision, TVisFit, VFrag, VStick
-
-
-def crack_speed(k: ArrayLike, beta: ArrayLike) -> FloatOrArray:
-    """Greenwood's normalized crack speed v(k, beta) (Appendix A).
-
-    Parameters
-    ----------
-    k : float or array_like
-        Ratio of the relaxed to the instantaneous modulus (dimensionless, 0 < k < 1).
-    beta : float or array_like
-        Normalized apparent surface energy G_eff / gamma (dimensionless, k < beta < 1/k).
-
-    Returns
-    -------
-    float or ndarray
-        v = sigma0^2 T_vis a_dot / (E* gamma) (dimensionless): > 0 (the contact grows) for
-        beta < 1, < 0 above, v(k, 1) = 0. Broadcasts like numpy.
-
-    Raises
-    ------
-    TypeError, ValueError
-        Arguments that are not real numbers, or out of their ranges (naming them).
-
-    Notes
-    -----
-    The parametric form in the transit time alpha (Appendix A) is tabulated once per k and
-    interpolated to 1e-8.
-
-    Examples
-    --------
-    >>> import stickiness as st
-    >>> st.crack_speed(0.01, 1.0)
-    0.0
-    >>> bool(st.crack_speed(0.01, 0.5) > 0 > st.crack_speed(0.01, 2.0))
-    True
-    """
-    b = Broadcast(k=k, beta=beta)
-    return b.out(b.call(_core.crack_speed, b.flat["k"], b.flat["beta"]))
-
-
-def t_vis_law(law: str, radius: ArrayLike) -> FloatOrArray:
-    """The relaxation time T_vis (s) of the size laws of Section 5.3, at radius R1 (m).
-
-    Parameters
-    ----------
-    law : {'co2', 'h2o'}
-        ``'co2'``: T_vis = 1e-11 s (R1/1 um)^1.11; ``'h2o'``: T_vis = 1e-10 s (R1/1.5 um)^1.11
-        (Gundlach et al. 2015). Any case.
-    radius : float, array_like or Quantity
-        Grain radius R1 (m).
-
-    Returns
-    -------
-    float or ndarray
-        T_vis (s).
-
-    Raises
-    ------
-    TypeError, ValueError
-        An unknown law, or a radius that is not > 0 and finite.
-
-    Examples
-    --------
-    >>> import stickiness as st
-    >>> round(st.t_vis_law("h2o", 90e-6), 11)  # Section 5.3: 9.4e-9 s
-    9.41e-09
-    """
-    _args.law_name("law", law, required=True)
-    b = Broadcast(radius=radius)
-    return b.out(b.call(_core.t_vis_law, law, b.flat["radius"]))
-
-
-@shared
-def jkr(
-    material: Union[Material, str],
-    radius: ArrayLike = DEFAULT_RADIUS,
-    *,
-    radius2: Optional[ArrayLike] = None,
-    wall: bool = False,
-) -> JKR:
-    """The JKR contact of two bodies of one material (Sections 2.2, 5.1, 6).
-
-    Parameters
-    ----------
-    {material}
-    {radius}
-    {radius2}
-    {wall}
-
-    Returns
-    -------
-    JKR
-        a_eq, delta_eq (m), the Tabor parameter, F_crit (N), delta_crit (m), E_stick,JKR,
-        E_break,JKR (J) and V_stick,JKR (m/s).
-
-    Raises
-    ------
-    {raises}
-
-    Notes
-    -----
-    V_stick,JKR = (14.18/m*)^(1/2) (gamma^5 R^4/E*^2)^(1/6) with the reduced radius R and mass
-    m* of the two bodies and the work of adhesion gamma = 2 gamma_SV.
-
-    {broadcast}
-
-    Examples
-    --------
-    >>> import stickiness as st
-    >>> round(st.jkr("co2", 60e-6).v_stick_jkr, 5)  # Section 5.1: 1.66e-2 m/s
-    0.01659
-    """
-    m = _args.material(material)
-    wall = _args.geometry(radius2, wall)
-    b = Broadcast(radius=radius, radius2=radius2)
-    d = b.call(_core.jkr, m, b.flat["radius"], b.flat.get("radius2"), wall)
-    b.warn(d["warnings"], stacklevel=3)
-    return JKR(**{f: b.out(d[f]) for f in JKR.__dataclass_fields__})
+from ._results import Collision, TVisFit, VFrag, VStick
 
 
 @shared
@@ -212,7 +94,7 @@ def collide(
     criterion = d["sticking_criterion"]
     outcome: Any = np.asarray(d["outcome"]).reshape(b.shape)
     e = b.out(d["e"])
-    observed = b.out(np.where(np.asarray(d["outcome"]) == "bouncing", d["e"], 0.0))
+    observed = b.out(d["e_observed"])
     if b.scalar:
         outcome = str(d["outcome"][0])
         contact_time = None if outcome == "sticking" else contact_time

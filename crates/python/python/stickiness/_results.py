@@ -60,6 +60,29 @@ class JKR:
 
 
 @dataclass(frozen=True)
+class Dimensionless:
+    """The two dimensionless numbers of a collision and the JKR time unit (Arakawa & Krijt 2021,
+    Section 2.5, in the units of ``docs/model.md``).
+
+    Attributes
+    ----------
+    c_d : float or ndarray
+        Drag number c_D = 2 (T_vis/nu^2) E* a_eq t0/m* (dimensionless); grows with T_vis.
+    c_a : float or ndarray
+        Crack-speed number c_a = E* gamma t0/(sigma0^2 T_vis a_eq) (dimensionless).
+    t0 : float or ndarray
+        Time unit t0 = sqrt(m* delta_eq/(3 pi gamma R)) (s).
+    """
+
+    #: Drag number c_D (dimensionless).
+    c_d: FloatOrArray
+    #: Crack-speed number c_a (dimensionless).
+    c_a: FloatOrArray
+    #: JKR time unit t0 (s).
+    t0: FloatOrArray
+
+
+@dataclass(frozen=True)
 class Collision:
     """One head-on collision (Sections 2.6, 4).
 
