@@ -36,6 +36,7 @@ pub const PYTHON_TEST_REQUIREMENTS: &[&str] = &[
     "astropy>=5.0",
     "emcee>=3.1",
     "corner>=2.2",
+    "tqdm>=4.0",
     "nbclient>=0.7",
     "nbformat>=5.7",
     "ipykernel>=6.0",

@@ -98,3 +98,28 @@ def test_snowlines_example_runs(tmp_path, root):
     )
     assert done.returncode == 0, done.stderr
     assert out.stat().st_size > 10_000
+
+
+def test_posteriors_bracket_the_disc():
+    # truth: Posterior.v_frag, the posterior's T_vis carried to the monomer by the size law
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", st.StickinessWarning)
+        post = st.infer("co2", 60e-6, v_stick=(0.04, 0.02), walkers=8, steps=200, seed=3)
+    T = np.array([200.0, 100.0, 50.0])
+    default = sd.vfrag_profile(T, monomer_radius=1e-7)
+    bands = {}
+    for q in (0.16, 0.84):
+        v = sd.vfrag_profile(T, monomer_radius=1e-7, posteriors={"co2": post}, quantile=q)
+        assert v[0] == default[0] and v[1] == default[1]  # refractory and H2O: unchanged
+        expected = post.v_frag(1e-7, quantiles=(q,)).iloc[0]
+        assert math.isclose(v[2], 100 * expected, rel_tol=1e-12)
+        bands[q] = v[2]
+    assert bands[0.16] <= bands[0.84]
+    with pytest.raises(ValueError, match="posteriors"):
+        sd.vfrag_profile(T, posteriors={"co": post})
+    with pytest.raises(ValueError, match="posteriors"):
+        sd.vfrag_profile(T, posteriors={"co2": 1e-10})
+    with pytest.raises(ValueError, match="quantile"):
+        sd.vfrag_profile(T, posteriors={"co2": post}, quantile=1.5)

@@ -13,10 +13,12 @@ Quick start::
     r = st.v_stick(co2, 60e-6, np.geomspace(1e-12, 1e-8, 33), method="table")
     r.v_stick                                                 # ndarray of shape (33,), microseconds
 
-Functions: :func:`crack_speed`, :func:`jkr`, :func:`collide`, :func:`v_stick`,
-:func:`fit_t_vis`, :func:`v_frag`, :func:`t_vis_law`, :func:`sweep`; the material:
-:class:`Material`; results: :class:`JKR`, :class:`Collision`, :class:`VStick`,
-:class:`TVisFit`, :class:`VFrag`. Leading arguments are positional (``material, radius``, then
+Functions: :func:`crack_speed`, :func:`jkr`, :func:`dimensionless`, :func:`collide`,
+:func:`v_stick`, :func:`fit_t_vis`, :func:`v_frag`, :func:`t_vis_law`, :func:`sweep`; inference
+from laboratory data: :func:`infer` (with :class:`SizeDistribution`, giving a
+:class:`Posterior`; needs ``pip install 'stickiness[infer]'``); the material:
+:class:`Material`; results: :class:`JKR`, :class:`Dimensionless`, :class:`Collision`,
+:class:`VStick`, :class:`TVisFit`, :class:`VFrag`. Leading arguments are positional (``material, radius``, then
 ``t_vis``, ``v_in`` or ``v_stick``), every other one keyword-only, in one order across the
 functions: ``k, radius2, wall, t_vis_law, v_max, rel_tol, method``.
 
@@ -42,8 +44,12 @@ from __future__ import annotations
 from . import _core
 from ._args import StickinessWarning
 from ._core import Material, SolverError, __version__
-from ._functions import collide, crack_speed, fit_t_vis, jkr, t_vis_law, v_frag, v_stick
-from ._results import JKR, Collision, TVisFit, VFrag, VStick
+from ._contact import crack_speed, dimensionless, jkr, t_vis_law
+from ._functions import collide, fit_t_vis, v_frag, v_stick
+from ._results import JKR, Collision, Dimensionless, TVisFit, VFrag, VStick
+from ._infer import infer
+from ._posterior import Posterior
+from ._sizes import SizeDistribution
 from .sweeps import sweep
 
 __all__ = [
@@ -51,18 +57,23 @@ __all__ = [
     "SolverError",
     "StickinessWarning",
     "JKR",
+    "Dimensionless",
     "Collision",
     "VStick",
     "TVisFit",
     "VFrag",
     "crack_speed",
     "jkr",
+    "dimensionless",
     "collide",
     "v_stick",
     "fit_t_vis",
     "v_frag",
     "t_vis_law",
     "sweep",
+    "infer",
+    "SizeDistribution",
+    "Posterior",
     "DEFAULT_RADIUS",
     "DEFAULT_K",
     "DEFAULT_REL_TOL",

@@ -28,6 +28,10 @@ Usage with DustPy (``pip install dustpy``; it is not needed to import :mod:`stic
     sim.initialize()
     sd.set_vfrag(sim, monomer_radius=1e-7)      # sim.dust.v.frag now follows sim.gas.T
     sim.run()
+
+With T_vis inferred from laboratory data (:func:`stickiness.infer`), a run bracketed by the
+data's uncertainty: ``sd.set_vfrag(sim, 1e-7, posteriors={"co2": post_co2, "h2o": post_h2o},
+quantile=0.84)`` (and 0.16).
 """
 
 from __future__ import annotations
@@ -40,6 +44,7 @@ import numpy as np
 from . import _args
 from ._core import Material
 from ._functions import v_frag
+from ._posterior import Posterior
 
 #: Temperature (K) above which the monomers are bare refractory grains: the H2O snow line,
 #: 150 K (the condensation temperature of water ice in protoplanetary discs; Lecar et al. 2006).
@@ -62,23 +67,27 @@ class VFragProfile:
 
     A callable: ``profile(T)`` with T in K (an array, such as DustPy's ``sim.gas.T``) gives
     V_frag in cm/s of the same shape. ``monomer_radius`` is one radius or one per cell (an array
-    of the shape of T). The V_frag of each (ice, radius) is computed once, on first use.
+    of the shape of T). The V_frag of each (ice, radius) is computed once, on first use. The
+    keyword options are those of :func:`vfrag_profile`.
     """
 
     def __init__(
         self,
         monomer_radius: Union[float, np.ndarray] = 1e-7,
+        *,
         t_h2o: float = T_H2O,
         t_co2: float = T_CO2,
         v_frag_refractory: float = 1.0,
         width: Optional[float] = None,
+        posteriors: Optional[Dict[str, Any]] = None,
+        quantile: float = 0.5,
     ) -> None:
         radius = _args.float_array("monomer_radius", monomer_radius)
         t_h2o = _args.scalar("t_h2o", t_h2o)
         t_co2 = _args.scalar("t_co2", t_co2)
         v_frag_refractory = _args.scalar("v_frag_refractory", v_frag_refractory)
         width = _args.scalar_option("width", width)
-        if not np.all(np.isfinite(radius) & (radius > 0)):
+        if radius.size == 0 or not np.all(np.isfinite(radius) & (radius > 0)):
             raise ValueError(f"monomer_radius = {monomer_radius!r}: must be > 0 and finite (m)")
         for name, value in (("t_h2o", t_h2o), ("t_co2", t_co2)):
             if not (math.isfinite(value) and value > 0):
@@ -91,7 +100,23 @@ class VFragProfile:
             )
         if width is not None and not (math.isfinite(width) and width > 0):
             raise ValueError(f"width = {width!r}: must be > 0 and finite (K), or None")
+        if posteriors is None:
+            posteriors = {}
+        if not isinstance(posteriors, dict):
+            raise ValueError(f"posteriors: expected a dict {{'co2' | 'h2o': Posterior}}, got {type(posteriors).__name__}")
+        for ice, post in posteriors.items():
+            if ice not in _ICES:
+                raise ValueError(f"posteriors: unknown ice {ice!r}; allowed: {tuple(_ICES)}")
+            if not isinstance(post, Posterior):
+                raise ValueError(f"posteriors[{ice!r}]: expected a stickiness.Posterior, got {type(post).__name__}")
+        quantile = _args.scalar("quantile", quantile)
+        if not 0.0 <= quantile <= 1.0:
+            raise ValueError(f"quantile = {quantile!r}: must be within 0 .. 1")
         self.monomer_radius = radius
+        #: Posteriors of T_vis per ice (``'co2'``, ``'h2o'``) replacing the Section 5.3 laws.
+        self.posteriors: Dict[str, Posterior] = dict(posteriors)
+        #: The posterior quantile of V_frag used for the ices in :attr:`posteriors`.
+        self.quantile = float(quantile)
         self.t_h2o = float(t_h2o)
         self.t_co2 = float(t_co2)
         self.v_frag_refractory = float(v_frag_refractory)
@@ -108,14 +133,21 @@ class VFragProfile:
         missing = [r for r in radii if (ice, float(r)) not in self._cache]
         if missing:
             material, law = _ICES[ice]
-            r = v_frag(material(), np.array(missing), t_vis_law=law, method="table")
-            values = np.atleast_1d(r.v_frag)
+            if ice in self.posteriors:
+                # the posterior's T_vis carried to each monomer size by the size law
+                q = self.posteriors[ice].v_frag(np.array(missing), quantiles=(self.quantile,))
+                values = q.iloc[:, 0].to_numpy()
+                limits = np.full(len(missing), np.nan)
+            else:
+                r = v_frag(material(), np.array(missing), t_vis_law=law, method="table")
+                values = np.atleast_1d(r.v_frag)
+                limits = np.atleast_1d(r.no_bouncing_below)
             bad = ~np.isfinite(values)
             if bad.any():
                 i = int(np.argmax(bad))
                 raise ValueError(
                     f"{ice} monomers of {missing[i]} m: no bouncing up to "
-                    f"{np.atleast_1d(r.no_bouncing_below)[i]} m/s, so V_frag exceeds every "
+                    f"{limits[i]} m/s (the search limit), so V_frag exceeds every "
                     "collision speed searched"
                 )
             for radius, value in zip(missing, values):
@@ -137,6 +169,15 @@ class VFragProfile:
         if not np.all(np.isfinite(T) & (T > 0)):
             raise ValueError("T: temperatures must be > 0 and finite (K)")
         shape = T.shape
+        try:
+            fits = np.broadcast_shapes(self.monomer_radius.shape, shape) == shape
+        except ValueError:
+            fits = False
+        if not fits:
+            raise ValueError(
+                f"monomer_radius: shape {self.monomer_radius.shape} does not broadcast to the "
+                f"temperatures' shape {shape} (one radius, or one per cell)"
+            )
         co2 = self._zone_values("co2", shape)
         h2o = self._zone_values("h2o", shape)
         refractory = math.log(self.v_frag_refractory)
@@ -154,33 +195,73 @@ class VFragProfile:
 def vfrag_profile(
     T: Any,
     monomer_radius: Union[float, np.ndarray] = 1e-7,
+    *,
     t_h2o: float = T_H2O,
     t_co2: float = T_CO2,
     v_frag_refractory: float = 1.0,
     width: Optional[float] = None,
+    posteriors: Optional[Dict[str, Any]] = None,
+    quantile: float = 0.5,
 ) -> np.ndarray:
     """V_frag IN cm/s at temperatures ``T`` (K) for monomers of ``monomer_radius`` (m).
 
-    See the module documentation for the zones; ``v_frag_refractory`` is in m/s (the output is
-    100 times it where T > t_h2o).
+    Parameters
+    ----------
+    T : array_like
+        Temperatures (K, > 0), e.g. DustPy's ``sim.gas.T``.
+    monomer_radius : float or array_like, optional
+        Monomer radius (m): one, or one per cell (the shape of ``T``). Default 1e-7.
+    t_h2o, t_co2 : float, optional
+        Snow lines (K): refractory above ``t_h2o``, H2O ice down to ``t_co2``, CO2 ice below.
+        Defaults 150 and 70.
+    v_frag_refractory : float, optional
+        V_frag of bare refractory grains (m/s; the output is 100 times it). Default 1.
+    width : float, optional
+        Width (K) of smooth (tanh) transitions at the snow lines; default: steps.
+    posteriors : dict, optional
+        ``{'co2': Posterior, 'h2o': Posterior}`` from :func:`stickiness.infer`: for those ices
+        V_frag is the ``quantile`` of the posterior's V_frag, each T_vis sample carried to the
+        monomer size by the size law T_vis ~ R1^1.11 (:meth:`Posterior.v_frag`). The other ices
+        keep the laws of Section 5.3.
+    quantile : float, optional
+        The posterior quantile (0..1), e.g. 0.16 and 0.84 to bracket a disc run by the data's
+        uncertainty. Default 0.5.
+
+    Returns
+    -------
+    ndarray
+        V_frag in cm/s, the shape of ``T``.
     """
-    return VFragProfile(monomer_radius, t_h2o, t_co2, v_frag_refractory, width)(T)
+    return VFragProfile(
+        monomer_radius, t_h2o=t_h2o, t_co2=t_co2, v_frag_refractory=v_frag_refractory,
+        width=width, posteriors=posteriors, quantile=quantile,
+    )(T)
 
 
 def set_vfrag(
     sim: Any,
     monomer_radius: Union[float, np.ndarray] = 1e-7,
+    *,
     t_h2o: float = T_H2O,
     t_co2: float = T_CO2,
     v_frag_refractory: float = 1.0,
     width: Optional[float] = None,
+    posteriors: Optional[Dict[str, Any]] = None,
+    quantile: float = 0.5,
 ) -> VFragProfile:
     """Installs an updater on ``sim.dust.v.frag`` (an initialised DustPy Simulation) so that it
-    follows ``sim.gas.T`` (in cm/s), and applies it at once. Returns the profile it uses."""
+    follows ``sim.gas.T`` (in cm/s), and applies it at once.
+
+    The options are those of :func:`vfrag_profile` (``posteriors=`` and ``quantile=`` bracket
+    the run by the uncertainty of inferred T_vis). Returns the :class:`VFragProfile` it uses.
+    """
     frag = getattr(getattr(getattr(sim, "dust", None), "v", None), "frag", None)
     if frag is None:
         raise ValueError("sim.dust.v.frag does not exist yet: call sim.initialize() first")
-    profile = VFragProfile(monomer_radius, t_h2o, t_co2, v_frag_refractory, width)
+    profile = VFragProfile(
+        monomer_radius, t_h2o=t_h2o, t_co2=t_co2, v_frag_refractory=v_frag_refractory,
+        width=width, posteriors=posteriors, quantile=quantile,
+    )
 
     def updater(s: Any) -> np.ndarray:
         return profile(s.gas.T)

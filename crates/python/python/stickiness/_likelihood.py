@@ -1,0 +1,279 @@
+"""The data of :func:`stickiness.infer` and their likelihood: a measured threshold, individual
+sticking outcomes, coefficients of restitution. The model's numbers come from the compiled core
+(V_stick from the master table or the search, e from single collisions); nothing here
+integrates a collision.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+
+from . import _args, _core
+from ._core import Material
+from ._sizes import SizeDistribution, weighted_quantile
+
+#: The free parameters :func:`stickiness.infer` knows, and their SI units.
+PARAMETERS: Dict[str, str] = {"t_vis": "s", "gamma_sv": "J/m^2"}
+
+#: Default prior of T_vis (s): log-uniform over the whole range the model is used in, from the
+#: JKR plateau (1e-16 s) past the no-bouncing cliff of every grain of the paper (1e-6 s).
+DEFAULT_T_VIS_PRIOR: Tuple[float, float] = (1e-16, 1e-6)
+#: Default prior of gamma_SV: log-uniform from this factor below to this factor above the
+#: material's value (the H2O literature spans 0.02-0.19 J/m^2, Section 5.2).
+DEFAULT_GAMMA_FACTOR = 2.0
+
+#: A measured threshold V +- sigma is searched up to V + this many sigma (and sticking outcomes
+#: up to their fastest speed): where V_stick lies beyond, it counts as lying at that speed, whose
+#: Gaussian likelihood is below exp(-50) of the peak; the searches stop early instead of
+#: chasing V_stick to 1000 V_stick,JKR.
+V_MAX_SIGMAS = 10.0
+#: Margin of the search limit over the fastest sticking outcome, so that no outcome sits on it.
+V_MAX_MARGIN = 2.0
+
+#: Collisions for restitution data are integrated at a crack-speed number c_a of at most this:
+#: below the T_vis where c_a reaches it, e has converged to the elastic (JKR) limit (3 mm CO2
+#: grains at 1.5-10 V_stick,JKR: e moves by 3e-6 from c_a = 1e8 to 1e9 and by 7e-7 from 1e9 to
+#: 1e10), while the collider refuses c_a > 3e10 (millions of steps). The master table clamps
+#: its nodes at the same value.
+C_A_MAX = 1e8
+#: A polydisperse sample enters each restitution point through this many equal-weight quantile
+#: radii (a collision for each per walker and point: the cost of e is what limits the
+#: quadrature; the thresholds use every radius of the sample).
+RESTITUTION_NODES = 8
+
+
+def _pair(name: str, value: Any, n: int) -> Tuple[np.ndarray, ...]:
+    """A tuple of ``n`` equal-length 1-d float arrays (``ValueError`` naming ``name``)."""
+    if not isinstance(value, (tuple, list)) or len(value) != n:
+        raise ValueError(f"{name}: expected a tuple of {n} arrays, got {type(value).__name__}")
+    arrays = [np.atleast_1d(_args.float_array(name, v)).astype(float) for v in value]
+    lengths = {a.shape for a in arrays}
+    if len(lengths) != 1 or arrays[0].ndim != 1:
+        shapes = ", ".join(str(a.shape) for a in arrays)
+        raise ValueError(f"{name}: the arrays must be 1-d and of one length, got shapes {shapes}")
+    if arrays[0].size == 0:
+        raise ValueError(f"{name}: no data (empty arrays)")
+    return tuple(arrays)
+
+
+def _check(name: str, what: str, values: np.ndarray, ok: np.ndarray, rule: str) -> None:
+    if not np.all(ok):
+        i = int(np.argmin(ok))
+        raise ValueError(f"{name}: {what}[{i}] = {values[i]!r}: must be {rule}")
+
+
+@dataclass(frozen=True)
+class Data:
+    """The measurements, checked and in SI units."""
+
+    #: A measured threshold and its 1-sigma (m/s), or None.
+    v_stick: Optional[Tuple[float, float]]
+    #: Speeds (m/s) and outcomes (True: stuck) of individual collisions, or None.
+    sticking: Optional[Tuple[np.ndarray, np.ndarray]]
+    #: Speeds (m/s), e and its 1-sigma of bouncing collisions, or None.
+    restitution: Optional[Tuple[np.ndarray, np.ndarray, np.ndarray]]
+
+    @classmethod
+    def parse(cls, v_stick: Any, sticking: Any, restitution: Any) -> "Data":
+        if v_stick is None and sticking is None and restitution is None:
+            raise ValueError("data: give at least one of v_stick, sticking, restitution")
+        threshold = None
+        if v_stick is not None:
+            if not isinstance(v_stick, (tuple, list)) or len(v_stick) != 2:
+                raise ValueError("v_stick: expected (value, sigma) in m/s")
+            value = _args.scalar("v_stick", _args.si("v_stick", v_stick[0]))
+            sigma = _args.scalar("v_stick", _args.si("v_stick", v_stick[1]))
+            if not (math.isfinite(value) and value > 0):
+                raise ValueError(f"v_stick: value = {value!r}: must be > 0 and finite (m/s)")
+            if not (math.isfinite(sigma) and sigma > 0):
+                raise ValueError(f"v_stick: sigma = {sigma!r}: must be > 0 and finite (m/s)")
+            threshold = (value, sigma)
+        outcomes = None
+        if sticking is not None:
+            if not isinstance(sticking, (tuple, list)) or len(sticking) != 2:
+                raise ValueError("sticking: expected (v_in, stuck): speeds (m/s) and booleans")
+            v = np.atleast_1d(_args.float_array("sticking", _args.si("v_in", sticking[0])))
+            stuck = np.atleast_1d(np.asarray(sticking[1]))
+            if stuck.dtype.kind not in "biu" or not np.all((stuck == 0) | (stuck == 1)):
+                raise ValueError("sticking: stuck must be booleans (or 0/1)")
+            if v.ndim != 1 or v.shape != stuck.shape or v.size == 0:
+                raise ValueError(
+                    f"sticking: v_in and stuck must be 1-d, non-empty and of one length, "
+                    f"got shapes {v.shape} and {stuck.shape}"
+                )
+            _check("sticking", "v_in", v, np.isfinite(v) & (v > 0), "> 0 and finite (m/s)")
+            outcomes = (v.astype(float), stuck.astype(bool))
+        bounces = None
+        if restitution is not None:
+            if isinstance(restitution, (tuple, list)) and len(restitution) == 3:
+                restitution = tuple(_args.si("v_in", r) if i == 0 else r for i, r in enumerate(restitution))
+            v, e, e_err = _pair("restitution", restitution, 3)
+            _check("restitution", "v_in", v, np.isfinite(v) & (v > 0), "> 0 and finite (m/s)")
+            _check("restitution", "e", e, np.isfinite(e) & (e >= 0) & (e <= 1), "within 0 .. 1")
+            _check("restitution", "e_err", e_err, np.isfinite(e_err) & (e_err > 0), "> 0 and finite")
+            bounces = (v, e, e_err)
+        return cls(threshold, outcomes, bounces)
+
+    def fastest(self) -> float:
+        """The highest speed (m/s) the threshold data need V_stick up to."""
+        speeds = [0.0]
+        if self.v_stick is not None:
+            speeds.append(self.v_stick[0] + V_MAX_SIGMAS * self.v_stick[1])
+        if self.sticking is not None:
+            speeds.append(V_MAX_MARGIN * float(self.sticking[0].max()))
+        return max(speeds)
+
+
+def priors(free: Sequence[str], given: Any, material: Material) -> Dict[str, Tuple[float, float]]:
+    """The log-uniform bounds of each free parameter (SI), defaults filled in."""
+    out: Dict[str, Tuple[float, float]] = {
+        "t_vis": DEFAULT_T_VIS_PRIOR,
+        "gamma_sv": (
+            material.gamma_sv / DEFAULT_GAMMA_FACTOR,
+            material.gamma_sv * DEFAULT_GAMMA_FACTOR,
+        ),
+    }
+    if given is None:
+        given = {}
+    if not isinstance(given, dict):
+        raise ValueError(f"priors: expected a dict {{name: (lo, hi)}}, got {type(given).__name__}")
+    for name, bounds in given.items():
+        if name not in free:
+            raise ValueError(
+                f"priors: {name!r} is not a free parameter (free = {tuple(free)!r})"
+            )
+        if not isinstance(bounds, (tuple, list)) or len(bounds) != 2:
+            raise ValueError(f"priors: {name}: expected (lo, hi) in {PARAMETERS[name]}")
+        lo = _args.scalar(f"priors[{name!r}]", _args.si(name, bounds[0]))
+        hi = _args.scalar(f"priors[{name!r}]", _args.si(name, bounds[1]))
+        if not (math.isfinite(lo) and math.isfinite(hi) and 0 < lo < hi):
+            raise ValueError(
+                f"priors: {name} = ({lo!r}, {hi!r}): must be 0 < lo < hi, finite "
+                f"({PARAMETERS[name]}; log-uniform bounds)"
+            )
+        out[name] = (lo, hi)
+    return {name: out[name] for name in free}
+
+
+class Model:
+    """V_stick over the radii of the sample and e at the restitution speeds, for arrays of
+    parameters; and the log-likelihood of the data.
+
+    ``t_vis`` and ``gamma_sv`` are arrays of one length (one entry per walker); ``gamma_sv``
+    None means the material's.
+    """
+
+    def __init__(
+        self,
+        material: Material,
+        sizes: SizeDistribution,
+        radius2: Optional[float],
+        wall: bool,
+        k: float,
+        data: Data,
+        method: str,
+        rel_tol: float,
+        v_stick_quantile: float,
+    ) -> None:
+        self.material = material
+        self.sizes = sizes
+        self.radius2 = radius2
+        self.wall = wall
+        self.k = k
+        self.data = data
+        self.method = method
+        self.rel_tol = rel_tol
+        self.quantile = v_stick_quantile
+        self.v_max = data.fastest()
+        nodes = min(RESTITUTION_NODES, len(sizes))
+        if nodes == len(sizes):
+            self.e_radii, self.e_weights = sizes.radii, sizes.weights
+        else:
+            q = (np.arange(nodes) + 0.5) / nodes
+            self.e_radii = np.array([sizes.quantile(x) for x in q])
+            self.e_weights = np.full(nodes, 1.0 / nodes)
+
+    def _materials(self, gamma_sv: Optional[np.ndarray], n: int) -> List[Material]:
+        if gamma_sv is None:
+            return [self.material]
+        return [self.material.replace(gamma_sv=float(g)) for g in gamma_sv[:n]]
+
+    def _second(self, n: int) -> Optional[np.ndarray]:
+        return None if self.radius2 is None else np.full(n, self.radius2)
+
+    def v_stick(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
+        """V_stick (m/s) of shape (walkers, radii); ``inf`` where it lies beyond the search
+        limit (no bouncing up to it)."""
+        radii = self.sizes.radii
+        n, r = t_vis.size, radii.size
+        if gamma_sv is None:
+            calls = [(self.material, np.tile(radii, n), np.repeat(t_vis, r))]
+        else:
+            calls = [(m, radii, np.full(r, t)) for m, t in zip(self._materials(gamma_sv, n), t_vis)]
+        out = []
+        for m, rad, t in calls:
+            d = _core.v_stick(
+                m, rad, self._second(rad.size), self.wall, t, np.full(rad.size, self.k),
+                self.v_max, self.rel_tol, self.method,
+            )
+            out.append(np.where(np.isnan(d["v_stick"]), np.inf, d["v_stick"]))
+        return np.concatenate(out).reshape(n, r)
+
+    def e_observed(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
+        """The observed e (0 for sticking and double collisions, Section 4.4) of shape
+        (walkers, restitution nodes, speeds)."""
+        assert self.data.restitution is not None
+        v = self.data.restitution[0]
+        radii = self.e_radii
+        n, r, s = t_vis.size, radii.size, v.size
+        if gamma_sv is None:
+            # one call: walkers x radii x speeds
+            calls = [(self.material, np.repeat(t_vis, r * s), np.tile(np.repeat(radii, s), n),
+                      np.tile(v, n * r))]
+        else:
+            calls = [(m, np.full(r * s, t), np.repeat(radii, s), np.tile(v, r))
+                     for m, t in zip(self._materials(gamma_sv, n), t_vis)]
+        out = []
+        for m, t, rad, speeds in calls:
+            second = self._second(rad.size)
+            c_a = _core.dimensionless(m, rad, second, self.wall, np.ones(rad.size))["c_a"]
+            # c_a ~ 1/T_vis: below c_a(1 s)/C_A_MAX the elastic limit has been reached
+            t = np.maximum(t, c_a / C_A_MAX)
+            c = _core.collide(
+                m, rad, second, self.wall, t, speeds, np.full(rad.size, self.k), None, False
+            )
+            out.append(c["e_observed"])
+        return np.concatenate(out).reshape(n, r, s)
+
+    def log_likelihood(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
+        """ln L of the data for each walker (``-inf`` where the data are impossible)."""
+        n = t_vis.size
+        total = np.zeros(n)
+        data = self.data
+        if data.v_stick is not None or data.sticking is not None:
+            vs = self.v_stick(t_vis, gamma_sv)
+            if data.v_stick is not None:
+                value, sigma = data.v_stick
+                clipped = np.minimum(vs, self.v_max)
+                q = (clipped[:, 0] if clipped.shape[1] == 1
+                     else weighted_quantile(clipped, self.sizes.weights, self.quantile))
+                total += -0.5 * ((np.asarray(q) - value) / sigma) ** 2
+            if data.sticking is not None:
+                v, stuck = data.sticking
+                # P(stuck | v) = weight of the radii with v < V_stick(R)
+                p = (vs[:, None, :] > v[None, :, None]).astype(float) @ self.sizes.weights
+                with np.errstate(divide="ignore"):
+                    total += np.where(stuck, np.log(p), np.log1p(-p)).sum(axis=1)
+        if data.restitution is not None:
+            _, e, e_err = data.restitution
+            model = self.e_observed(t_vis, gamma_sv)
+            z = -0.5 * ((model - e[None, None, :]) / e_err) ** 2
+            # the radius of each collision is unknown: a mixture over the sample's nodes
+            top = z.max(axis=1, keepdims=True)
+            mix = top[:, 0, :] + np.log(np.exp(z - top).transpose(0, 2, 1) @ self.e_weights)
+            total += mix.sum(axis=1)
+        return total

@@ -1,0 +1,156 @@
+"""The sizes of a grain sample: a weighted set of radii, e.g. a lognormal on quantile nodes."""
+
+from __future__ import annotations
+
+import math
+from statistics import NormalDist
+from typing import Any, Optional
+
+import numpy as np
+
+from . import _args
+
+#: Nodes of :meth:`SizeDistribution.lognormal` by default: the 64 radii of the issue's speed
+#: target; the weighted quantiles of V_stick then move by at most 1/64 of the sample.
+DEFAULT_NODES = 64
+
+
+class SizeDistribution:
+    """Radii R1 (m) of a grain sample with their weights (fractions of the grains).
+
+    Parameters
+    ----------
+    samples : array_like or Quantity
+        Radii R1 (m, > 0 and finite), e.g. measured grains or quadrature nodes.
+    weights : array_like, optional
+        Their weights (>= 0, not all 0; normalised to sum 1). Default: equal weights.
+
+    Raises
+    ------
+    TypeError, ValueError
+        Radii or weights that are not numbers, not positive, of different lengths, or empty.
+
+    Notes
+    -----
+    In :func:`stickiness.infer` a sample of sizes enters each likelihood as a sum over its radii:
+    the probability that a collision at speed v sticks is the weight of the radii with
+    v < V_stick(R); a measured threshold is compared with a weighted quantile of V_stick(R).
+
+    Examples
+    --------
+    >>> import stickiness as st
+    >>> d = st.SizeDistribution.lognormal(median=60e-6, width=0.3)
+    >>> len(d.radii), round(d.median * 1e6, 3)
+    (64, 60.0)
+    >>> st.SizeDistribution([40e-6, 60e-6], weights=[1, 3]).weights.tolist()
+    [0.25, 0.75]
+    """
+
+    def __init__(self, samples: Any, weights: Optional[Any] = None) -> None:
+        radii = np.atleast_1d(_args.float_array("samples", samples)).astype(float)
+        if radii.ndim != 1 or radii.size == 0:
+            raise ValueError(f"samples: expected a non-empty 1-d array of radii, got shape {radii.shape}")
+        bad = ~(np.isfinite(radii) & (radii > 0))
+        if bad.any():
+            i = int(np.argmax(bad))
+            raise ValueError(f"samples[{i}] = {radii[i]!r}: must be > 0 and finite (m)")
+        if weights is None:
+            w = np.full(radii.size, 1.0 / radii.size)
+        else:
+            w = np.atleast_1d(_args.float_array("weights", weights)).astype(float)
+            if w.shape != radii.shape:
+                raise ValueError(
+                    f"weights: expected one weight per radius ({radii.size}), got shape {w.shape}"
+                )
+            if not (np.all(np.isfinite(w)) and np.all(w >= 0) and w.sum() > 0):
+                raise ValueError("weights: must be >= 0 and finite, and not all 0")
+            w = w / w.sum()
+        order = np.argsort(radii, kind="stable")
+        #: The radii R1 (m), increasing.
+        self.radii: np.ndarray = radii[order]
+        #: Their weights (sum 1).
+        self.weights: np.ndarray = w[order]
+
+    @classmethod
+    def lognormal(
+        cls, median: Any, width: Any, *, nodes: int = DEFAULT_NODES
+    ) -> "SizeDistribution":
+        """A lognormal distribution of radii on ``nodes`` equal-weight quantile nodes.
+
+        Parameters
+        ----------
+        median : float or Quantity
+            Median radius (m, > 0).
+        width : float
+            Standard deviation of ln R1 (dimensionless, > 0): 80 % of the grains lie within a
+            factor exp(1.2816 width) of the median.
+        nodes : int, optional
+            Number of radii, at the quantiles (i + 1/2)/nodes. Default 64.
+
+        Returns
+        -------
+        SizeDistribution
+
+        Examples
+        --------
+        >>> import math, stickiness as st
+        >>> # Musiolik et al. (2016a): 80 % of the CO2 grains between 40 and 120 um
+        >>> w = math.log(120 / 40) / (2 * 1.2816)
+        >>> d = st.SizeDistribution.lognormal(median=math.sqrt(40e-6 * 120e-6), width=w)
+        >>> round(d.quantile(0.1) * 1e6), round(d.quantile(0.9) * 1e6)
+        (40, 120)
+        """
+        median = _args.scalar("median", median)
+        width = _args.scalar("width", width)
+        if not (math.isfinite(median) and median > 0):
+            raise ValueError(f"median = {median!r}: must be > 0 and finite (m)")
+        if not (math.isfinite(width) and width > 0):
+            raise ValueError(f"width = {width!r}: must be > 0 and finite (sigma of ln R)")
+        if isinstance(nodes, bool) or not isinstance(nodes, (int, np.integer)) or nodes < 1:
+            raise ValueError(f"nodes = {nodes!r}: must be an integer >= 1")
+        z = np.array([NormalDist().inv_cdf((i + 0.5) / nodes) for i in range(int(nodes))])
+        return cls(median * np.exp(width * z))
+
+    def quantile(self, q: float) -> float:
+        """The radius (m) below which a fraction ``q`` of the grains lie (interpolated between
+        the nodes' mid-weights, as :func:`numpy.percentile` does for equal weights)."""
+        q = _args.scalar("q", q)
+        if not 0.0 <= q <= 1.0:
+            raise ValueError(f"q = {q!r}: must be within 0 .. 1")
+        return float(np.exp(weighted_quantile(np.log(self.radii), self.weights, q)))
+
+    @property
+    def median(self) -> float:
+        """The median radius (m)."""
+        return self.quantile(0.5)
+
+    def __len__(self) -> int:
+        return int(self.radii.size)
+
+    def __repr__(self) -> str:
+        return (
+            f"SizeDistribution({len(self)} radii, median {self.median:.3g} m, "
+            f"{self.radii[0]:.3g} .. {self.radii[-1]:.3g} m)"
+        )
+
+
+def weighted_quantile(values: Any, weights: Any, q: float) -> Any:
+    """The quantile ``q`` of ``values`` along the last axis with ``weights`` (sum 1): linear
+    interpolation between the nodes' mid-weights (i + 1/2)/n for equal weights, clamped to the
+    end values; an infinite value (a V_stick beyond the search limit) sorts last and is returned
+    as it is once reached. A float for 1-d ``values``, an array of the leading shape otherwise."""
+    v = np.asarray(values, dtype=float)
+    w = np.broadcast_to(np.asarray(weights, dtype=float), v.shape)
+    order = np.argsort(v, axis=-1, kind="stable")
+    v = np.take_along_axis(v, order, axis=-1)
+    w = np.take_along_axis(w, order, axis=-1)
+    mid = np.cumsum(w, axis=-1) - 0.5 * w
+    n = v.shape[-1]
+    j = np.clip(np.sum(mid < q, axis=-1, keepdims=True), 1, max(n - 1, 1))
+    lo, hi = np.maximum(j - 1, 0), np.minimum(j, n - 1)
+    a, b = np.take_along_axis(v, lo, -1)[..., 0], np.take_along_axis(v, hi, -1)[..., 0]
+    ma, mb = np.take_along_axis(mid, lo, -1)[..., 0], np.take_along_axis(mid, hi, -1)[..., 0]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        f = np.clip(np.where(mb > ma, (q - ma) / (mb - ma), 0.0), 0.0, 1.0)
+        out = np.where(f == 0.0, a, np.where(f == 1.0, b, a + f * (b - a)))
+    return float(out) if out.ndim == 0 else out

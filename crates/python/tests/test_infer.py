@@ -1,0 +1,192 @@
+"""stickiness.infer: the posterior of T_vis (and gamma_SV) from laboratory data.
+
+Each test names its truth: the paper's numbers (Arakawa & Krijt 2021, Section 5.1), fit_t_vis
+for a sharp threshold, synthetic data made with the model at known parameters, and the
+calibration of the intervals over many such data sets (simulation-based calibration).
+"""
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+
+import stickiness as st
+
+CO2 = st.Material.co2()
+R = 60e-6  # the CO2 grains of Musiolik et al. (2016a), Section 5.1
+
+
+@pytest.fixture(scope="module")
+def paper():
+    """The paper's CO2 measurement, 0.04 +- 0.02 m/s at 60 um, with the default prior."""
+    return st.infer(CO2, R, v_stick=(0.04, 0.02), seed=11)
+
+
+def test_the_paper_co2_posterior(paper):
+    # Section 5.1 reads V_stick(T_vis) = 0.04 + 0.02 m/s at T_vis = 1.97e-9 s: the upper tail
+    # keeps that bound
+    hi = np.quantile(paper.samples["t_vis"], 0.975)
+    assert 1e-9 < hi < 2.5e-9
+    # V_stick,JKR = 0.0166 m/s is only 1.2 sigma below 0.04: the JKR plateau (every T_vis below
+    # ~1e-11 s gives it) is not rejected, and with a log-uniform prior from 1e-16 s it holds
+    # more than half of the mass
+    assert (paper.samples["t_vis"] < 1e-10).mean() > 0.5
+    assert paper.autocorr_time["t_vis"] * 50 < 1500  # the default chain is long enough
+    s = paper.summary()
+    assert list(s.columns) == ["median", "16%", "84%", "2.5%", "97.5%"]
+    assert list(s.index) == ["t_vis"]
+    assert s.loc["t_vis", "97.5%"] == pytest.approx(hi)
+    lo68, hi68 = paper.interval("t_vis", level=0.68)
+    assert lo68 == pytest.approx(s.loc["t_vis", "16%"]) and hi68 == pytest.approx(s.loc["t_vis", "84%"])
+    assert paper.priors == {"t_vis": (1e-16, 1e-6)}
+
+
+def test_a_sharp_threshold_gives_fit_t_vis():
+    # truth: the T_vis whose V_stick is the measured one (fit_t_vis, the exact search at
+    # 1e-8); a threshold known to 1e-4 pins T_vis to ~3e-4
+    fit = st.fit_t_vis(CO2, R, 0.04, rel_tol=1e-8)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", st.StickinessWarning)  # a short chain in a test
+        post = st.infer(CO2, R, v_stick=(0.04, 4e-6), walkers=16, steps=400, seed=2)
+    assert post.samples["t_vis"].median() == pytest.approx(fit.t_vis, rel=0.01)
+
+
+def test_v_frag_carries_the_posterior_by_the_size_law(paper):
+    # V_stick rises with T_vis (Section 4), so quantiles commute with it: the median V_frag
+    # is 10 V_stick of two monomers at the median T_vis carried by T_vis ~ R1^1.11 (Sec. 5.3)
+    q = paper.v_frag(1e-7, quantiles=(0.5, 0.84), max_samples=len(paper.samples))
+    t = np.quantile(paper.samples["t_vis"], [0.5, 0.84]) * (1e-7 / R) ** 1.11
+    direct = st.v_frag(CO2, 1e-7, t).v_frag
+    assert q["median"] == pytest.approx(direct[0], rel=2e-3)
+    assert q["84%"] == pytest.approx(direct[1], rel=2e-3)
+    table = paper.v_frag([1e-7, 1e-6], quantiles=(0.5,), max_samples=len(paper.samples))
+    assert list(table.index) == [1e-7, 1e-6] and table.loc[1e-7, "median"] == q["median"]
+
+
+def synthetic(sizes, t_vis, material, rng, n=40):
+    """Sticking outcomes made with the model: each collision draws a radius from the sample
+    and sticks when v < V_stick(R) (the exact search at 1e-8)."""
+    radii = rng.choice(sizes.radii, size=n, p=sizes.weights)
+    v_true = st.v_stick(material, radii, t_vis, rel_tol=1e-8).v_stick
+    v = np.median(v_true) * np.exp(rng.uniform(math.log(0.3), math.log(3.0), n))
+    return v, v < v_true
+
+
+@pytest.mark.parametrize("polydisperse", [False, True])
+def test_recovery_with_gamma_free(polydisperse):
+    # truth: the parameters the synthetic data were made with
+    rng = np.random.default_rng(7)
+    t_true, g_true = 3e-10, 1.3 * CO2.gamma_sv
+    truth = CO2.replace(gamma_sv=g_true)
+    sizes = (st.SizeDistribution.lognormal(median=R, width=0.3) if polydisperse
+             else st.SizeDistribution([R]))
+    sticking = synthetic(sizes, t_true, truth, rng)
+    restitution = None
+    if not polydisperse:
+        # bouncing collisions with e measured to 0.02 (e from the collision itself)
+        v_stick = st.v_stick(truth, R, t_true).v_stick
+        v = v_stick * np.geomspace(1.5, 6.0, 6)
+        c = st.collide(truth, R, t_true, v)
+        e = c.e_observed + rng.normal(0.0, 0.02, v.size)  # Section 4.4: e as observed
+        restitution = (v, np.clip(e, 0.0, 1.0), np.full(v.size, 0.02))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", st.StickinessWarning)  # short chains in a test
+        post = st.infer(CO2, R if not polydisperse else sizes, sticking=sticking,
+                        restitution=restitution, free=("t_vis", "gamma_sv"),
+                        walkers=16, steps=500, seed=3)
+    lo, hi = post.interval("t_vis", level=0.95)
+    assert lo < t_true < hi
+    lo, hi = post.interval("gamma_sv", level=0.95)
+    assert lo < g_true < hi
+    assert list(post.samples.columns) == ["t_vis", "gamma_sv"]
+
+
+def test_simulation_based_calibration():
+    # truth: parameters drawn from the prior and data made with the model at them; then the
+    # 68 % and 95 % intervals must cover the truth in 68 % and 95 % of the data sets
+    # (binomial spread over 200 sets: 3.3 % and 1.5 %; the bounds are the issue's). The exact
+    # posterior of this design, on a grid of 30001 T_vis, covers the truth in 67.7 % and 95.7 %
+    # of 3000 sets: what is tested here is that the sampler reaches it.
+    rng = np.random.default_rng(1)
+    prior = (1e-12, 1e-9)
+    sets, inside68, inside95 = 200, 0, 0
+    speeds = np.geomspace(0.015, 0.06, 8)  # a fixed design of sticking experiments
+    for i in range(sets):
+        t_true = 10 ** rng.uniform(*np.log10(prior))
+        v_true = st.v_stick(CO2, R, t_true, method="table").v_stick
+        sigma = 0.1 * v_true
+        measured = v_true + rng.normal(0.0, sigma)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", st.StickinessWarning)
+            post = st.infer(CO2, R, v_stick=(measured, sigma), sticking=(speeds, speeds < v_true),
+                            priors={"t_vis": prior}, walkers=16, steps=400, burn=100, seed=i)
+        lo, hi = post.interval("t_vis", level=0.68)
+        inside68 += lo < t_true < hi
+        lo, hi = post.interval("t_vis", level=0.95)
+        inside95 += lo < t_true < hi
+    print(f"coverage over {sets} sets: 68 %: {inside68 / sets:.3f}, 95 %: {inside95 / sets:.3f}")
+    assert 0.60 <= inside68 / sets <= 0.76, inside68
+    assert 0.90 <= inside95 / sets <= 0.99, inside95
+
+
+def test_the_same_seed_gives_the_same_chain():
+    a = st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=100, seed=4)
+    b = st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=100, seed=4)
+    np.testing.assert_array_equal(a.chain, b.chain)
+
+
+def test_a_short_chain_warns():
+    with pytest.warns(st.StickinessWarning, match="autocorrelation"):
+        st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=60, seed=1)
+
+
+def test_the_plot_is_a_corner_figure(paper):
+    import matplotlib.figure
+
+    fig = paper.plot()
+    assert isinstance(fig, matplotlib.figure.Figure) and len(fig.axes) == 1
+
+
+@pytest.mark.parametrize(
+    "kwargs, argument",
+    [
+        (dict(), "data"),
+        (dict(v_stick=(0.04, -0.02)), "v_stick"),
+        (dict(v_stick=(0.04,)), "v_stick"),
+        (dict(sticking=([0.01, 0.02], [True])), "sticking"),
+        (dict(sticking=([], [])), "sticking"),
+        (dict(sticking=([0.05, 0.01], [True, False])), "sticking"),  # stuck faster than bounced
+        (dict(restitution=([0.1], [0.5], [-0.1])), "restitution"),
+        (dict(restitution=([0.1, 0.2], [0.5], [0.1])), "restitution"),
+        (dict(restitution=([0.1], [1.5], [0.1])), "restitution"),
+        (dict(v_stick=(0.04, 0.02), free=("t_vis", "density")), "free"),
+        (dict(v_stick=(0.04, 0.02), free=()), "free"),
+        (dict(v_stick=(0.04, 0.02), priors={"t_vis": (1e-6, 1e-12)}), "priors"),
+        (dict(v_stick=(0.04, 0.02), priors={"gamma_sv": (0.1, 0.2)}), "priors"),
+        (dict(v_stick=(0.04, 0.02), free=("gamma_sv",)), "t_vis"),
+        (dict(v_stick=(0.04, 0.02), walkers=1), "walkers"),
+        (dict(v_stick=(0.04, 0.02), steps=0), "steps"),
+        (dict(v_stick=(0.04, 0.02), steps=10, burn=10), "burn"),
+        (dict(v_stick=(0.04, 0.02), method="exact"), "method"),
+        (dict(v_stick=(0.04, 0.02), v_stick_quantile=1.5), "v_stick_quantile"),
+        (dict(v_stick=(0.04, 0.02), radius2=1e-6, wall=True), "radius2"),
+    ],
+)
+def test_bad_input_names_the_argument(kwargs, argument):
+    with pytest.raises(ValueError, match=argument):
+        st.infer(CO2, R, **kwargs)
+
+
+def test_a_size_distribution():
+    # Musiolik et al. (2016a): 80 % of the grains within 40-120 um
+    width = math.log(120 / 40) / (2 * 1.2816)
+    d = st.SizeDistribution.lognormal(median=math.sqrt(40e-6 * 120e-6), width=width)
+    assert d.quantile(0.1) == pytest.approx(40e-6, rel=0.01)
+    assert d.quantile(0.9) == pytest.approx(120e-6, rel=0.01)
+    assert d.weights.sum() == pytest.approx(1.0) and len(d) == 64
+    for bad, argument in (([], "samples"), ([1e-6, -1e-6], "samples"), ([1e-6], "weights")):
+        with pytest.raises(ValueError, match=argument):
+            st.SizeDistribution(bad, weights=[1.0, 2.0] if argument == "weights" else None)
+    with pytest.raises(ValueError, match="width"):
+        st.SizeDistribution.lognormal(median=1e-6, width=0.0)
