@@ -46,3 +46,11 @@ def test_dask_example_runs(tmp_path):
     out = run_example("dask_sweep.py", "--out", str(tmp_path / "s.csv"), tmp=tmp_path)
     assert out.returncode == 0, out.stderr
     assert (tmp_path / "s.csv").stat().st_size > 1000
+
+
+def test_infer_example_runs(tmp_path):
+    # short chains: the committed figure is made with the defaults (docs/figures/infer_ice.png)
+    out = run_example("infer_ice.py", str(tmp_path / "ice.png"), "--steps", "150", tmp=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert "P(T_vis,H2O > T_vis,CO2)" in out.stdout
+    assert (tmp_path / "ice.png").stat().st_size > 10_000
