@@ -190,3 +190,26 @@ def test_a_size_distribution():
             st.SizeDistribution(bad, weights=[1.0, 2.0] if argument == "weights" else None)
     with pytest.raises(ValueError, match="width"):
         st.SizeDistribution.lognormal(median=1e-6, width=0.0)
+
+
+def test_a_progress_bar_when_asked(capsys):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", st.StickinessWarning)
+        st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=20, seed=1, progress=True)
+    assert "20/20" in capsys.readouterr().err  # tqdm's bar on stderr
+
+
+def test_importing_stickiness_needs_no_emcee():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys; sys.modules['emcee'] = None; sys.modules['corner'] = None\n"
+        "import stickiness as st\n"
+        "try:\n"
+        "    st.infer('co2', 60e-6, v_stick=(0.04, 0.02))\n"
+        "except ImportError as e:\n"
+        "    print(e)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert "pip install 'stickiness[infer]'" in out.stdout, out.stderr
