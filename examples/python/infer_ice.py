@@ -68,7 +68,8 @@ laws = {"CO2": st.v_frag("co2", 1e-7, t_vis_law="co2", method="table").v_frag,
         "H2O": st.v_frag("h2o", 1e-7, t_vis_law="h2o", method="table").v_frag}
 for name, band in bands.items():
     print(f"V_frag (m/s) of {name} aggregates of 0.1 um monomers: "
-          + ", ".join(f"{q} {v:.3g}" for q, v in band.items())
+          + ", ".join(f"{q} {v:.3g}" if np.isfinite(v) else f"{q} beyond the search limit"
+                      for q, v in band.items())
           + f" (the Section 5.3 law: {laws[name]:.3g})")
 
 fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.4))

@@ -3,6 +3,7 @@ summary, intervals and corner plot, and the V_frag of monomers they imply."""
 
 from __future__ import annotations
 
+import re
 import warnings
 from typing import Any, Dict, Optional, Sequence, Tuple
 
@@ -243,9 +244,13 @@ class Posterior:
                     m = self.material.replace(gamma_sv=float(g))
                     values[i] = _v_frag(m, radii, t[i], k=self.k, method=self.method).v_frag
         if caught:  # one warning, not one per posterior sample
+            message = str(caught[0].message)
+            if len(caught) > 1:  # one per sample's call: count them, drop the call's element
+                first = re.sub(r"\s*\[first at element.*\]$", "", message)
+                message = (f"{len(caught)} warnings over the {len(pick)} posterior samples' "
+                           f"V_frag; the first: {first}")
             warnings.warn(
-                f"{len(caught)} warnings over {len(pick)} posterior samples; the first: "
-                f"{caught[0].message}",
+                message,
                 StickinessWarning,
                 stacklevel=2,
             )
