@@ -89,13 +89,16 @@ impl From<ThresholdsError> for CliError {
                 ThresholdsError::Unreachable {
                     v_stick,
                     t_vis_max,
-                    reduced_radius,
+                    geometry,
                 },
             ) => CliError::Usage(format!(
-                "--v-stick = {} m/s is not reached by any T_vis up to {} s for these grains (--radius: reduced radius R = {} m; the T_vis of a given V_stick grows roughly as R^(7/6))",
+                "--v-stick = {} m/s is not reached by any T_vis up to {} s for these grains ({}; the T_vis of a given V_stick grows roughly as R^(7/6))",
                 number(v_stick),
                 number(t_vis_max),
-                number(reduced_radius)
+                geometry
+                    .as_arguments()
+                    .replace("radius2 =", "--radius2 =")
+                    .replace("radius =", "--radius =")
             )),
             (None, e) => CliError::Compute(e.to_string()),
         }

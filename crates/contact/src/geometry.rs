@@ -125,6 +125,27 @@ fn sphere_mass(r: f64, density: f64) -> f64 {
     4.0 * PI * density * r.powi(3) / 3.0
 }
 
+impl Geometry {
+    /// The geometry as the arguments that set it, for messages (SI): `radius = 6e-5 m`
+    /// (identical spheres), `radius = 6e-5 m, radius2 = 3e-5 m`, `radius = 6e-5 m on a wall`;
+    /// then the reduced radius R (m) the contact uses.
+    ///
+    /// ```
+    /// use contact::Geometry;
+    /// assert_eq!(Geometry::spheres(6e-5, 3e-5).as_arguments(),
+    ///            "radius = 0.00006 m, radius2 = 0.00003 m: reduced radius R = 0.00002 m");
+    /// ```
+    pub fn as_arguments(&self) -> String {
+        let n = numerics::format::number;
+        let given = match *self {
+            Self::Spheres { r1, r2 } if r1 == r2 => format!("radius = {} m", n(r1)),
+            Self::Spheres { r1, r2 } => format!("radius = {} m, radius2 = {} m", n(r1), n(r2)),
+            Self::Wall { r1 } => format!("radius = {} m on a wall", n(r1)),
+        };
+        format!("{given}: reduced radius R = {} m", n(self.reduced_radius()))
+    }
+}
+
 impl std::fmt::Display for Geometry {
     /// `two identical spheres of 60 um`, `two spheres of 60 um and 30 um`, `a 60 um sphere on a wall`.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {

@@ -1,5 +1,6 @@
 //! Typed errors of the threshold searches, layered over the collision errors.
 
+use contact::Geometry;
 use dynamics::DynamicsError;
 use numerics::format::number;
 use numerics::OutOfRange;
@@ -49,21 +50,23 @@ pub enum ThresholdsError {
         v_stick: f64,
         /// V_stick,JKR of the contact (m/s).
         v_stick_jkr: f64,
+        /// The two bodies (radii in m): V_stick,JKR scales as R^(-5/6) with the reduced radius.
+        geometry: Geometry,
     },
     /// A measured V_stick above what any relaxation time up to `t_vis_max` gives.
     #[error(
-        "v_stick = {} m/s is not reached for T_vis up to {} s by these grains (reduced radius R = {} m; the T_vis of a given V_stick grows roughly as R^(7/6), the drag number c_D being proportional to T_vis R^(-7/6))",
+        "v_stick = {} m/s is not reached for T_vis up to {} s by these grains ({}; the T_vis of a given V_stick grows roughly as R^(7/6), the drag number c_D being proportional to T_vis R^(-7/6))",
         number(*v_stick),
         number(*t_vis_max),
-        number(*reduced_radius)
+        geometry.as_arguments()
     )]
     Unreachable {
         /// The measured value (m/s).
         v_stick: f64,
         /// Largest relaxation time tried (s).
         t_vis_max: f64,
-        /// Reduced radius R of the contact (m).
-        reduced_radius: f64,
+        /// The two bodies (radii in m).
+        geometry: Geometry,
     },
 }
 
@@ -78,12 +81,14 @@ impl ThresholdsError {
             ThresholdsError::BelowJkr {
                 v_stick,
                 v_stick_jkr,
+                geometry,
             } => Some(OutOfRange::new(
                 "v_stick",
                 *v_stick,
                 format!(
-                    "> V_stick,JKR = {}, which V_stick exceeds for every T_vis > 0",
-                    number(*v_stick_jkr)
+                    "> V_stick,JKR = {} of these grains ({}; V_stick,JKR scales as R^(-5/6)), which V_stick exceeds for every T_vis > 0",
+                    number(*v_stick_jkr),
+                    geometry.as_arguments()
                 ),
                 "m/s",
             )),

@@ -191,6 +191,7 @@ fn solve(
         return Err(ThresholdsError::BelowJkr {
             v_stick: v_target,
             v_stick_jkr,
+            geometry: *contact.geometry(),
         });
     }
     let opts = SearchOptions {
@@ -240,7 +241,7 @@ fn solve(
                 return Err(ThresholdsError::Unreachable {
                     v_stick: v_target,
                     t_vis_max: T_VIS_CEILING,
-                    reduced_radius: contact.reduced_radius(),
+                    geometry: *contact.geometry(),
                 });
             }
             f_hi = f(hi)?;

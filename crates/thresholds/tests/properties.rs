@@ -59,3 +59,26 @@ fn the_search_closes_near_the_cliff() {
     assert_eq!(outcome(vd * (1.0 - MARGIN)), Outcome::Sticking);
     assert_eq!(outcome(vs * (1.0 + MARGIN)), Outcome::Bouncing);
 }
+
+/// Just below the cliff (CO2 60 um at T_vis = 1.3826e-8 s, where V_stick is hundreds of m/s and
+/// jumps with the tolerance) the full-tolerance pairs missed V_stick on one side again and again;
+/// their width doubled each time until a step went below 0 (`v_in = -162.8 m/s`, found by the
+/// Python junk test through `fit_t_vis(v_stick=793)`). The search now answers, and single
+/// collisions confirm it: V_stick bounces just above, or nothing bounces at the limit.
+#[test]
+fn the_search_stays_at_positive_speeds_below_the_cliff() {
+    let c = Contact::new(Material::co2(), Geometry::identical(60e-6)).unwrap();
+    let law = CrackLaw::new(0.01).unwrap();
+    let t_vis = 1.3825978050661468e-8;
+    let opts = SearchOptions {
+        v_max: Some(1586.0),
+        ..SearchOptions::default()
+    };
+    let th = sticking_thresholds(&c, &law, t_vis, &opts).unwrap();
+    let collider = Collider::new(c, &law, t_vis).unwrap();
+    let outcome = |v: f64| collider.collide(v).unwrap().outcome;
+    match th.v_stick {
+        Some(vs) => assert_eq!(outcome(vs * (1.0 + MARGIN)), Outcome::Bouncing),
+        None => assert_ne!(outcome(1586.0), Outcome::Bouncing),
+    }
+}

@@ -26,6 +26,9 @@ from ._sizes import SizeDistribution
 DEFAULT_WALKERS = 32
 #: Default chain length (steps per walker); a quarter is discarded as burn-in by default.
 DEFAULT_STEPS = 2000
+#: At most this many walkers: each step evaluates all of them (an ensemble of 1e5 already costs
+#: seconds a step), and an absurd count is a typo, not a request.
+MAX_WALKERS = 100_000
 #: emcee's rule of thumb (its documentation, "Autocorrelation analysis"): a chain shorter than
 #: 50 integrated autocorrelation times gives an unreliable estimate of the time itself.
 MIN_AUTOCORR_TIMES = 50.0
@@ -73,16 +76,18 @@ def _free(value: Any) -> Tuple[str, ...]:
     if not names:
         raise ValueError(f"free: empty; give at least one of {tuple(PARAMETERS)}")
     for n in names:
-        if n not in PARAMETERS:
+        if not isinstance(n, str) or n not in PARAMETERS:
             raise ValueError(f"free: unknown parameter {n!r}; allowed: {tuple(PARAMETERS)}")
     if len(set(names)) != len(names):
         raise ValueError(f"free = {names!r}: a parameter is named twice")
     return tuple(p for p in PARAMETERS if p in names)
 
 
-def _count(name: str, value: Any, least: int) -> int:
-    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < least:
-        raise ValueError(f"{name} = {value!r}: must be an integer >= {least}")
+def _count(name: str, value: Any, least: int, most: Optional[int] = None) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < least \
+            or (most is not None and value > most):
+        within = f">= {least}" if most is None else f"within {least} .. {most}"
+        raise ValueError(f"{name} = {value!r}: must be an integer {within}")
     return int(value)
 
 
@@ -333,7 +338,7 @@ def infer(
         raise ValueError("t_vis: a fixed value and free=('t_vis', ...) exclude each other")
     if "gamma_sv" not in free:
         fixed["gamma_sv"] = material.gamma_sv
-    walkers = _count("walkers", walkers, 2 * len(free))
+    walkers = _count("walkers", walkers, 2 * len(free), MAX_WALKERS)
     steps = _count("steps", steps, 1)
     burn = steps // 4 if burn is None else _count("burn", burn, 0)
     if burn >= steps:

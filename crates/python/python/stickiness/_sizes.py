@@ -13,6 +13,8 @@ from . import _args
 #: Nodes of :meth:`SizeDistribution.lognormal` by default: the 64 radii of the issue's speed
 #: target; the weighted quantiles of V_stick then move by at most 1/64 of the sample.
 DEFAULT_NODES = 64
+#: At most this many nodes: every likelihood evaluation asks V_stick at each of them.
+MAX_NODES = 100_000
 
 
 class SizeDistribution:
@@ -60,7 +62,7 @@ class SizeDistribution:
             w = np.atleast_1d(_args.float_array("weights", weights)).astype(float)
             if w.shape != radii.shape:
                 raise ValueError(
-                    f"weights: expected one weight per radius ({radii.size}), got shape {w.shape}"
+                    f"weights: expected one weight per radius of samples ({radii.size}), got shape {w.shape}"
                 )
             if not (np.all(np.isfinite(w)) and np.all(w >= 0) and w.sum() > 0):
                 raise ValueError("weights: must be >= 0 and finite, and not all 0")
@@ -106,10 +108,18 @@ class SizeDistribution:
             raise ValueError(f"median = {median!r}: must be > 0 and finite (m)")
         if not (math.isfinite(width) and width > 0):
             raise ValueError(f"width = {width!r}: must be > 0 and finite (sigma of ln R)")
-        if isinstance(nodes, bool) or not isinstance(nodes, (int, np.integer)) or nodes < 1:
-            raise ValueError(f"nodes = {nodes!r}: must be an integer >= 1")
+        if isinstance(nodes, bool) or not isinstance(nodes, (int, np.integer)) \
+                or not 1 <= nodes <= MAX_NODES:
+            raise ValueError(f"nodes = {nodes!r}: must be an integer within 1 .. {MAX_NODES}")
         z = np.array([NormalDist().inv_cdf((i + 0.5) / nodes) for i in range(int(nodes))])
-        return cls(median * np.exp(width * z))
+        with np.errstate(over="ignore", under="ignore"):
+            radii = median * np.exp(width * z)
+        if not np.all(np.isfinite(radii) & (radii > 0)):
+            raise ValueError(
+                f"width = {width!r}: with median = {median!r} m the extreme nodes leave the "
+                f"floating-point range (radii of {radii.min():g} .. {radii.max():g} m)"
+            )
+        return cls(radii)
 
     def quantile(self, q: float) -> float:
         """The radius (m) below which a fraction ``q`` of the grains lie (interpolated between

@@ -133,20 +133,25 @@ class VFragProfile:
         missing = [r for r in radii if (ice, float(r)) not in self._cache]
         if missing:
             material, law = _ICES[ice]
-            if ice in self.posteriors:
-                # the posterior's T_vis carried to each monomer size by the size law
-                q = self.posteriors[ice].v_frag(np.array(missing), quantiles=(self.quantile,))
-                values = q.iloc[:, 0].to_numpy()
-                limits = np.full(len(missing), np.nan)
-            else:
-                r = v_frag(material(), np.array(missing), t_vis_law=law, method="table")
-                values = np.atleast_1d(r.v_frag)
-                limits = np.atleast_1d(r.no_bouncing_below)
+            try:
+                if ice in self.posteriors:
+                    # the posterior's T_vis carried to each monomer size by the size law
+                    post = self.posteriors[ice]
+                    q = post.v_frag(np.array(missing), quantiles=(self.quantile,))
+                    values = q.iloc[:, 0].to_numpy()
+                    limits = np.full(len(missing), np.nan)
+                else:
+                    r = v_frag(material(), np.array(missing), t_vis_law=law, method="table")
+                    values = np.atleast_1d(r.v_frag)
+                    limits = np.atleast_1d(r.no_bouncing_below)
+            except ValueError as e:  # the core names its own argument, radius
+                raise ValueError(f"monomer_radius: {e}") from None
             bad = ~np.isfinite(values)
             if bad.any():
                 i = int(np.argmax(bad))
                 raise ValueError(
-                    f"{ice} monomers of {missing[i]} m: no bouncing up to "
+                    f"monomer_radius = {missing[i]} m: {ice} monomers of this size show no "
+                    f"bouncing up to "
                     f"{limits[i]} m/s (the search limit), so V_frag exceeds every "
                     "collision speed searched"
                 )

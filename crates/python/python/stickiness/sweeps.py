@@ -44,7 +44,7 @@ def _materials(material: Any) -> Tuple[Tuple[str, Material], ...]:
     out = []
     for m in items:
         if isinstance(m, str):
-            out.append((m, Material.named(m)))
+            out.append((m, _args.material(m)))
         elif isinstance(m, Material):
             preset = {Material.co2(): "co2", Material.h2o(): "h2o"}.get(m)
             out.append((preset or repr(m), m))

@@ -46,6 +46,10 @@ const CLOSING_HALF_WIDTH: f64 = 0.45;
 const BOUNCING_PAIR_MARGIN: f64 = 0.25;
 /// Factor by which a full-tolerance pair widens when it missed V_stick on one side.
 const PAIR_GROWTH: f64 = 2.0;
+/// The widest a pair grows (relative half-width): after a dozen misses (7e-5 doubled 12 times)
+/// the pair spans 0.75-1.25 of its centre and a step down halves the speed, so no speed
+/// reaches 0 (a search just below the no-bouncing cliff missed 20 times and asked V_in < 0).
+const MAX_PAIR_HALF_WIDTH: f64 = 0.25;
 /// The largest half-width of a pair around the secant zero of two full-tolerance collisions, as
 /// a fraction of their bracket: the pair then lies inside the bracket.
 const SECANT_PAIR_MAX_HALF_WIDTH: f64 = 0.25;
@@ -241,13 +245,15 @@ impl Search<'_> {
                 if lo.v >= self.v_max * (1.0 - rel_tol) {
                     return Vec::new();
                 }
-                self.stick.half_width *= PAIR_GROWTH;
+                self.stick.half_width =
+                    (self.stick.half_width * PAIR_GROWTH).min(MAX_PAIR_HALF_WIDTH);
                 lo.v * (1.0 + 2.0 * self.stick.half_width)
             }
             (None, Some(hi)) => {
                 // everything at full tolerance so far bounces: follow V_out down to its root
                 // (two bouncing speeds at full tolerance), or step down
-                self.stick.half_width *= PAIR_GROWTH;
+                self.stick.half_width =
+                    (self.stick.half_width * PAIR_GROWTH).min(MAX_PAIR_HALF_WIDTH);
                 let step = hi.v * (1.0 - 2.0 * self.stick.half_width);
                 self.v_out_root(tight)
                     .filter(|q| *q < hi.v)
