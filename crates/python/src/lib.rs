@@ -57,6 +57,7 @@ mod _core {
         m.add("DEFAULT_RADIUS", thresholds::DEFAULT_RADIUS)?;
         m.add("DEFAULT_K", thresholds::DEFAULT_K)?;
         m.add("DEFAULT_REL_TOL", thresholds::DEFAULT_REL_TOL)?;
+        m.add("T_VIS_EXPONENT", thresholds::T_VIS_EXPONENT)?;
         m.add("SWEEP_COLUMNS", thresholds::sweep::COLUMNS.to_vec())?;
         Ok(())
     }

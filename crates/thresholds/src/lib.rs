@@ -62,7 +62,9 @@ pub use dynamics::{
 pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, FitWarning, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
 pub use greenwood::{CrackLaw, GreenwoodError};
-pub use laws::{fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_LAWS, V_FRAG_FACTOR};
+pub use laws::{
+    fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_EXPONENT, T_VIS_LAWS, V_FRAG_FACTOR,
+};
 pub use master::{MasterTable, Ratios};
 pub use numerics::OutOfRange;
 /// Default radius R1 (m) of the CLI and the Python package: the typical CO2 grain of Musiolik et

@@ -19,6 +19,7 @@ __all__ = [
     "Material",
     "SWEEP_COLUMNS",
     "SolverError",
+    "T_VIS_EXPONENT",
     "_InputError",
     "__version__",
     "collide",
@@ -39,6 +40,8 @@ DEFAULT_RADIUS: float
 DEFAULT_K: float
 #: Default relative width of the threshold brackets (dimensionless).
 DEFAULT_REL_TOL: float
+#: Exponent of the size laws T_vis ~ R1^1.11 (Section 5.3, Gundlach et al. 2015).
+T_VIS_EXPONENT: float
 #: The columns of a sweep's rows, as the CLI's CSV header.
 SWEEP_COLUMNS: List[str]
 

@@ -9,7 +9,7 @@ from typing import Any, Dict, Optional, Sequence, Tuple
 
 import numpy as np
 
-from . import _args
+from . import _args, _core
 from ._args import StickinessWarning
 from ._core import Material
 from ._functions import v_frag as _v_frag
@@ -19,8 +19,9 @@ from ._sizes import SizeDistribution
 #: The quantiles of :meth:`Posterior.summary` and :meth:`Posterior.v_frag`: the median, the
 #: 68 % interval (16/84 %) and the 95 % interval (2.5/97.5 %).
 SUMMARY_QUANTILES: Tuple[float, ...] = (0.5, 0.16, 0.84, 0.025, 0.975)
-#: The size law of T_vis (Section 5.3, Gundlach et al. 2015): T_vis ~ R1^1.11.
-SIZE_LAW_EXPONENT = 1.11
+#: The exponent of the size law of T_vis (Section 5.3, Gundlach et al. 2015): T_vis ~ R1^1.11,
+#: the library's (``thresholds::T_VIS_EXPONENT``).
+SIZE_LAW_EXPONENT: float = _core.T_VIS_EXPONENT
 #: :meth:`Posterior.v_frag` uses at most this many posterior samples (evenly thinned): the
 #: quantiles then move by about 1 / sqrt(4000) of their spread.
 V_FRAG_MAX_SAMPLES = 4000
