@@ -137,33 +137,75 @@ pub enum Cell {
     List(Vec<String>),
 }
 
+/// The input cells of a point (the first [`INPUT_COLUMNS`] of [`COLUMNS`]), its material named
+/// as in `grid`: what a row of the point must hold.
+pub fn point_cells(grid: &Grid, p: &Point) -> [Cell; INPUT_COLUMNS] {
+    let m = &p.constants;
+    let n = |v: f64| Cell::Number(Some(v));
+    [
+        Cell::Text(grid.materials[p.material].name.clone()),
+        n(m.gamma_sv),
+        n(m.young),
+        n(m.poisson),
+        n(m.density),
+        n(p.geometry.r1()),
+        Cell::Number(p.geometry.r2()),
+        Cell::Flag(p.geometry.is_wall()),
+        n(p.t_vis),
+        n(p.k),
+    ]
+}
+
+/// How many of [`COLUMNS`] are inputs (the point); the rest are results.
+pub const INPUT_COLUMNS: usize = 10;
+
 impl Row {
     /// The row's cells, in the order of [`COLUMNS`] (its material named as in `grid`): the one
     /// place that maps a row to its columns, for the CSV and JSON Lines forms and the Python
     /// DataFrame alike.
     pub fn cells(&self, grid: &Grid) -> [Cell; COLUMNS.len()] {
-        let p = &self.point;
-        let m = &p.constants;
-        let n = |v: f64| Cell::Number(Some(v));
+        let [a, b, c, d, e, f, g, h, i, j] = point_cells(grid, &self.point);
         [
-            Cell::Text(grid.materials[p.material].name.clone()),
-            n(m.gamma_sv),
-            n(m.young),
-            n(m.poisson),
-            n(m.density),
-            n(p.geometry.r1()),
-            Cell::Number(p.geometry.r2()),
-            Cell::Flag(p.geometry.is_wall()),
-            n(p.t_vis),
-            n(p.k),
+            a,
+            b,
+            c,
+            d,
+            e,
+            f,
+            g,
+            h,
+            i,
+            j,
             Cell::Number(self.v_stick),
             Cell::Number(self.v_double_onset),
-            n(self.v_stick_jkr),
+            Cell::Number(Some(self.v_stick_jkr)),
             Cell::Number(self.v_frag),
             Cell::Number(self.no_bouncing_below),
             Cell::Text(self.method.name().to_string()),
             Cell::List(self.warnings.clone()),
         ]
+    }
+}
+
+impl Cell {
+    /// The cell as a CSV field (before quoting).
+    pub fn csv_field(&self) -> String {
+        match self {
+            Cell::Text(s) => s.clone(),
+            Cell::Number(v) => v.map_or(String::new(), number),
+            Cell::Flag(b) => b.to_string(),
+            Cell::List(l) => l.join(WARNINGS_SEPARATOR),
+        }
+    }
+
+    /// The cell as a JSON value.
+    pub fn json(&self) -> serde_json::Value {
+        match self {
+            Cell::Text(s) => s.clone().into(),
+            Cell::Number(v) => (*v).into(),
+            Cell::Flag(b) => (*b).into(),
+            Cell::List(l) => l.clone().into(),
+        }
     }
 }
 
@@ -174,33 +216,38 @@ pub const WARNINGS_SEPARATOR: &str = "; ";
 pub fn row_text(format: Format, grid: &Grid, row: &Row) -> String {
     let cells = row.cells(grid);
     match format {
-        Format::Csv => {
-            let fields: Vec<String> = cells
-                .iter()
-                .map(|c| match c {
-                    Cell::Text(s) => s.clone(),
-                    Cell::Number(v) => v.map_or(String::new(), number),
-                    Cell::Flag(b) => b.to_string(),
-                    Cell::List(l) => l.join(WARNINGS_SEPARATOR),
-                })
-                .collect();
-            csv_line(&fields)
-        }
+        Format::Csv => csv_line(&cells.iter().map(Cell::csv_field).collect::<Vec<_>>()),
         Format::Jsonl => {
             let object: serde_json::Map<String, serde_json::Value> = COLUMNS
                 .iter()
-                .zip(cells)
-                .map(|(name, c)| {
-                    let value = match c {
-                        Cell::Text(s) => s.into(),
-                        Cell::Number(v) => v.into(),
-                        Cell::Flag(b) => b.into(),
-                        Cell::List(l) => l.into(),
-                    };
-                    (name.to_string(), value)
-                })
+                .zip(&cells)
+                .map(|(name, c)| (name.to_string(), c.json()))
                 .collect();
             format!("{}\n", serde_json::Value::Object(object))
+        }
+    }
+}
+
+/// The fields of a written row (one line, without its line break) by column: the CSV fields as
+/// text, or the JSON object's values; `None` if the line is not a row of [`COLUMNS`].
+pub fn row_fields(format: Format, line: &str) -> Option<Vec<serde_json::Value>> {
+    match format {
+        Format::Csv => {
+            let record = csv::ReaderBuilder::new()
+                .has_headers(false)
+                .from_reader(line.as_bytes())
+                .records()
+                .next()?
+                .ok()?;
+            (record.len() == COLUMNS.len())
+                .then(|| record.iter().map(|f| f.to_string().into()).collect())
+        }
+        Format::Jsonl => {
+            let v: serde_json::Value = serde_json::from_str(line).ok()?;
+            let o = v.as_object()?;
+            (o.len() == COLUMNS.len())
+                .then(|| COLUMNS.iter().map(|c| o.get(*c).cloned()).collect())
+                .flatten()
         }
     }
 }

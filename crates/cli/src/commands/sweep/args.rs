@@ -1,7 +1,7 @@
 //! The flags of `stickiness sweep` and what they determine: the grid, the search options and
 //! the header that identifies the sweep in its file.
 
-use crate::args::{BulkOverrides, MethodArg, MethodName, Overrides};
+use crate::args::{BulkOverrides, MethodArg, Overrides};
 use crate::error::CliError;
 use clap::{Args, ValueEnum};
 use numerics::format::number;
@@ -69,8 +69,14 @@ pub struct SweepArgs {
     #[arg(long, value_name = "FILE.csv")]
     pub out: PathBuf,
     /// Continue an existing file of the same sweep: keep its complete rows, compute the rest.
+    /// Every kept row must stand for its grid point (inputs as written, results that read as
+    /// numbers); the first that does not is refused (exit 2, the file untouched).
     #[arg(long, conflicts_with = "force")]
     pub resume: bool,
+    /// With --resume: also recompute N kept rows chosen at random, and the last one, and refuse
+    /// if one differs beyond its method's tolerance (an edited result).
+    #[arg(long, value_name = "N", requires = "resume")]
+    pub verify: Option<usize>,
     /// Overwrite an existing file.
     #[arg(long)]
     pub force: bool,
@@ -167,10 +173,10 @@ impl SweepArgs {
         if let Some(v) = self.v_max {
             command.push(format!("--v-max {}", number(v)));
         }
-        // the default (search) is left out, so that the header of a default sweep is unchanged
-        if self.method.method == MethodName::Table {
-            command.push("--method table".into());
-        }
+        // always written: the default changed from search to table, and a resume must not mix
+        // the two
+        let method: thresholds::ThresholdMethod = self.method.method.into();
+        command.push(format!("--method {}", method.name()));
         let format: thresholds::sweep::Format = self.format.into();
         command.push(format!("--format {}", format.name()));
         command.join(" ")

@@ -6,8 +6,9 @@
 //! file keeps what a command does with it: the file, the threads and the progress. Chunks run
 //! on all cores; rows are written in grid order as soon as they and every row before them are
 //! done, each with one `write` call. `--resume` keeps the complete rows of an existing file
-//! (cutting off a torn last line) and computes only the rest, so that a resumed file equals an
-//! uninterrupted one byte for byte.
+//! (cutting off a torn last line) once each stands for its grid point (`--verify N`: and N of
+//! them recompute to what is written), and computes only the rest, so that a resumed file
+//! equals an uninterrupted one byte for byte; a file it cannot vouch for is refused untouched.
 
 mod args;
 
@@ -22,12 +23,15 @@ use std::io::Write;
 use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc;
-use thresholds::sweep::{remaining, row_text, written_rows, Laws, Row};
-use thresholds::ThresholdsError;
+use thresholds::sweep::{
+    check_rows, remaining, row_text, verify_rows, written_rows, Grid, Laws, Row, VerifyError,
+    Written,
+};
+use thresholds::{SearchOptions, ThresholdsError};
 
-/// The rows already written to `path` for the sweep with `header` (cutting off a torn last
-/// line), or a fresh file holding only the header.
-fn open_rows(args: &SweepArgs, path: &Path, header: &str) -> Result<Vec<String>, CliError> {
+/// What an existing file holds for the sweep with `header`: its complete rows and the length up
+/// to them (a torn last line beyond), or `None` for a fresh file. Nothing is written here.
+fn existing_rows(args: &SweepArgs, path: &Path, header: &str) -> Result<Option<Written>, CliError> {
     let exists = path.exists();
     if exists && !args.resume && !args.force {
         return Err(CliError::Usage(format!(
@@ -36,30 +40,88 @@ fn open_rows(args: &SweepArgs, path: &Path, header: &str) -> Result<Vec<String>,
         )));
     }
     if !(exists && args.resume) {
-        std::fs::write(path, header).map_err(|e| {
+        return Ok(None);
+    }
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::Usage(format!("--resume: cannot read {}: {e}", path.display())))?;
+    match written_rows(&text, header) {
+        Some(w) => Ok(Some(w)),
+        None => Err(CliError::Usage(format!(
+            "--resume: {} holds another sweep (its header differs from this command's); use another --out, or --force to overwrite it",
+            path.display()
+        ))),
+    }
+}
+
+/// Checks the kept rows against the grid (and recomputes `--verify` of them); the first that
+/// cannot be kept is refused, naming the file, the line and the column.
+fn check_kept(
+    args: &SweepArgs,
+    grid: &Grid,
+    options: &SearchOptions,
+    header: &str,
+    written: &Written,
+) -> Result<(), CliError> {
+    let path = args.out.display();
+    let format = args.format.into();
+    let first_line = header.lines().count() + 1;
+    check_rows(grid, &written.rows, format, first_line)
+        .map_err(|e| CliError::Usage(format!("--resume: {path}, {e}; nothing was written")))?;
+    let Some(n) = args.verify else {
+        return Ok(());
+    };
+    let rows = written.rows.len();
+    let mut picks: Vec<usize> = sample(rows.saturating_sub(1), n);
+    picks.extend(rows.checked_sub(1));
+    verify_rows(grid, &written.rows, format, first_line, &picks, options).map_err(|e| match e {
+        VerifyError::Differs(bad) => CliError::Usage(format!(
+            "--resume --verify: {path}, {bad}; nothing was written"
+        )),
+        VerifyError::Compute(e) => e.into(),
+    })
+}
+
+/// `n` distinct indices below `len` drawn at random (all of them when `n >= len`).
+fn sample(len: usize, n: usize) -> Vec<usize> {
+    let mut all: Vec<usize> = (0..len).collect();
+    let mut state = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0x5EED, |d| d.as_nanos() as u64);
+    // a partial Fisher-Yates shuffle with SplitMix64
+    for i in 0..n.min(len) {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        let j = i + ((z ^ (z >> 31)) % (len - i) as u64) as usize;
+        all.swap(i, j);
+    }
+    all.truncate(n.min(len));
+    all
+}
+
+/// The file ready for appending: a fresh one holding the header, or the kept one with its torn
+/// last line cut off.
+fn prepare(path: &Path, header: &str, written: Option<&Written>) -> Result<(), CliError> {
+    let Some(w) = written else {
+        return std::fs::write(path, header).map_err(|e| {
             CliError::Usage(format!(
                 "--out {}: cannot write the file: {e}",
                 path.display()
             ))
-        })?;
-        return Ok(Vec::new());
-    }
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Usage(format!("--resume: cannot read {}: {e}", path.display())))?;
-    let Some(written) = written_rows(&text, header) else {
-        return Err(CliError::Usage(format!(
-            "--resume: {} holds another sweep (its header differs from this command's); use another --out, or --force to overwrite it",
-            path.display()
-        )));
+        });
     };
-    if written.complete_len < text.len() {
+    let len = std::fs::metadata(path)
+        .map_err(|e| CliError::Usage(format!("--resume: cannot read {}: {e}", path.display())))?
+        .len();
+    if (w.complete_len as u64) < len {
         let f = OpenOptions::new().write(true).open(path).map_err(|e| {
             CliError::Usage(format!("--resume: cannot write {}: {e}", path.display()))
         })?;
-        f.set_len(written.complete_len as u64)
+        f.set_len(w.complete_len as u64)
             .map_err(|e| CliError::Compute(format!("cannot truncate {}: {e}", path.display())))?;
     }
-    Ok(written.rows)
+    Ok(())
 }
 
 /// Runs the command.
@@ -70,14 +132,13 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
         return Err(CliError::Usage("--jobs = 0: must be >= 1".into()));
     }
     let path = &args.out;
-    let written = open_rows(args, path, &header)?;
-    let (total, done) = (grid.len(), written.len());
-    if done > total {
-        return Err(CliError::Usage(format!(
-            "--resume: {} holds {done} rows, more than the {total} of this sweep",
-            path.display()
-        )));
+    let kept = existing_rows(args, path, &header)?;
+    if let Some(w) = &kept {
+        check_kept(args, &grid, &options, &header, w)?;
     }
+    prepare(path, &header, kept.as_ref())?;
+    let written = kept.map(|w| w.rows).unwrap_or_default();
+    let (total, done) = (grid.len(), written.len());
     let mut file = OpenOptions::new().append(true).open(path).map_err(|e| {
         CliError::Usage(format!(
             "--out {}: cannot write the file: {e}",
