@@ -103,6 +103,26 @@ pub struct Collision {
 }
 
 impl Collision {
+    /// A collision known only by its rebound (outcome, e, V_out in m/s), as the restitution
+    /// tables of `thresholds` give it: no contact time, trajectory or solver statistics (NaN,
+    /// empty, zero).
+    pub fn from_rebound(outcome: Outcome, e: f64, v_out: f64) -> Self {
+        Self {
+            outcome,
+            e,
+            v_out,
+            contact_time: None,
+            sticking_criterion: None,
+            decided_at: f64::NAN,
+            max_energy_increase: 0.0,
+            beta_max: f64::NAN,
+            steps: 0,
+            method: Method::Auto,
+            trajectory: Vec::new(),
+            rebound: None,
+        }
+    }
+
     /// The coefficient of restitution an experiment observes ([`Outcome::observed_e`]): `e` for
     /// bouncing, 0 for sticking and double collisions (Section 4.4).
     pub fn observed_e(&self) -> f64 {

@@ -229,15 +229,16 @@ impl FastBranch {
 
 /// Greenwood's crack law `v(k, beta)` for one k, evaluated by table interpolation.
 ///
-/// Build it once per k (0.17 ms: the quadratures were done at build time) and share it:
-/// evaluation is a cubic polynomial in a cell found from the bits of its argument (the first
-/// visit of an octave fills that octave's cells from the table). The tables sit behind an
-/// [`Arc`], so a clone (or `CrackLaw::from(&law)`) shares them, with the cells filled so far,
-/// instead of copying.
+/// Make it once per k and share it: its table is built on the first evaluation (0.17 ms: the
+/// quadratures were done at build time), so a law that is never evaluated (a threshold the
+/// master tables answer) costs nothing. Evaluation is a cubic polynomial in a cell found from
+/// the bits of its argument (the first visit of an octave fills that octave's cells from the
+/// table). The tables sit behind an [`Arc`], so a clone (or `CrackLaw::from(&law)`) shares them,
+/// with the cells filled so far, instead of copying.
 #[derive(Debug, Clone)]
 pub struct CrackLaw {
     k: f64,
-    tables: Arc<Tables>,
+    tables: Arc<OnceLock<Tables>>,
 }
 
 /// The two branches' tables of one k, each with its fast representation.
@@ -249,6 +250,32 @@ struct Tables {
     opening_fast: FastBranch,
 }
 
+impl Tables {
+    /// The tables of `k` (checked: 0 < k < 1).
+    fn new(k: f64) -> Self {
+        let mut closing = Vec::with_capacity(J_NODES.len());
+        let mut opening = Vec::with_capacity(J_NODES.len());
+        for (i, &[j3, one_minus_j3, k_log]) in J_NODES.iter().enumerate() {
+            let j = JIntegrals::from_parts(crate::quad::node_alpha(i), j3, one_minus_j3, k_log);
+            for (branch, out) in [
+                (Branch::Closing, &mut closing),
+                (Branch::Opening, &mut opening),
+            ] {
+                // k was checked by `CrackLaw::new`, so every point exists
+                if let Ok(p) = CrackPoint::from_integrals(k, &j, branch) {
+                    out.push((p.zeta(), p.v.abs().ln()));
+                }
+            }
+        }
+        Tables {
+            closing: BranchTable::from_points(closing),
+            opening: BranchTable::from_points(opening),
+            closing_fast: FastBranch::new(),
+            opening_fast: FastBranch::new(),
+        }
+    }
+}
+
 impl From<&CrackLaw> for CrackLaw {
     /// Shares the tables of `law` (a reference-count increment, no copy).
     fn from(law: &CrackLaw) -> Self {
@@ -257,9 +284,10 @@ impl From<&CrackLaw> for CrackLaw {
 }
 
 impl CrackLaw {
-    /// Tabulates the crack law for the modulus ratio `k` (dimensionless, 0 < k < 1).
+    /// The crack law for the modulus ratio `k` (dimensionless, 0 < k < 1).
     ///
-    /// Cost: a few thousand logarithms; the quadratures were done at build time.
+    /// Cost: nothing until the first evaluation, which tabulates it (a few thousand
+    /// logarithms; the quadratures were done at build time).
     ///
     /// # Example
     /// ```
@@ -280,27 +308,15 @@ impl CrackLaw {
     /// ```
     pub fn new(k: f64) -> Result<Self, GreenwoodError> {
         check_k(k)?;
-        let mut closing = Vec::with_capacity(J_NODES.len());
-        let mut opening = Vec::with_capacity(J_NODES.len());
-        for (i, &[j3, one_minus_j3, k_log]) in J_NODES.iter().enumerate() {
-            let j = JIntegrals::from_parts(crate::quad::node_alpha(i), j3, one_minus_j3, k_log);
-            for (branch, out) in [
-                (Branch::Closing, &mut closing),
-                (Branch::Opening, &mut opening),
-            ] {
-                let p = CrackPoint::from_integrals(k, &j, branch)?;
-                out.push((p.zeta(), p.v.abs().ln()));
-            }
-        }
         Ok(Self {
             k,
-            tables: Arc::new(Tables {
-                closing: BranchTable::from_points(closing),
-                opening: BranchTable::from_points(opening),
-                closing_fast: FastBranch::new(),
-                opening_fast: FastBranch::new(),
-            }),
+            tables: Arc::new(OnceLock::new()),
         })
+    }
+
+    /// The tables, built on first use.
+    fn tables(&self) -> &Tables {
+        self.tables.get_or_init(|| Tables::new(self.k))
     }
 
     /// The modulus ratio k this table was built for (dimensionless).
@@ -367,8 +383,14 @@ impl CrackLaw {
             (Branch::Opening, (beta - 1.0) / d, (1.0 / k - 1.0) / (d * d))
         };
         let (table, fast, sign) = match branch {
-            Branch::Closing => (&self.tables.closing, &self.tables.closing_fast, 1.0),
-            Branch::Opening => (&self.tables.opening, &self.tables.opening_fast, -1.0),
+            Branch::Closing => {
+                let t = self.tables();
+                (&t.closing, &t.closing_fast, 1.0)
+            }
+            Branch::Opening => {
+                let t = self.tables();
+                (&t.opening, &t.opening_fast, -1.0)
+            }
         };
         let (f, df_dr) = fast.eval(r, table).unwrap_or_else(|| {
             let (w, dw) = table.eval(r.ln());
@@ -395,7 +417,7 @@ mod tests {
     fn fast_cells_reproduce_the_table() {
         for k in [0.005, 0.01, 0.3] {
             let law = CrackLaw::new(k).unwrap();
-            let t = &law.tables;
+            let t = law.tables();
             for (table, fast) in [(&t.closing, &t.closing_fast), (&t.opening, &t.opening_fast)] {
                 let (mut worst, mut worst_slope) = (0.0f64, 0.0f64);
                 for e in FAST_MIN_EXP..FAST_MAX_EXP {
