@@ -28,13 +28,32 @@ enum Command {
         #[arg(long)]
         check: bool,
     },
-    /// Build the master tables of V_stick / V_stick,JKR over the two dimensionless numbers with
-    /// the exact search (about 10 minutes on 2 cores) and write crates/thresholds/data/master_k*.csv.
+    /// Build the master tables of V_stick / V_stick,JKR over the two dimensionless numbers and k
+    /// with the exact search (hours on 2 cores) and write crates/thresholds/data/master_*.csv.
     MasterTable {
-        /// Recompute a sample of the committed tables' nodes instead, and fail if the model no
-        /// longer gives them.
+        /// Recompute a sample of the committed tables' nodes and end points instead, and fail if
+        /// the model no longer gives them.
         #[arg(long)]
         check: bool,
+        /// Build only this part: the end curves, the tables (on the committed end curves), or
+        /// the checks between tables of neighbouring k.
+        #[arg(long, value_enum, default_value = "all")]
+        part: xtask::master_table::Part,
+        /// With `--part tables`: only the tables of these indices (k = 0.005 2^(i/3)).
+        #[arg(long, value_delimiter = ',')]
+        only: Vec<usize>,
+    },
+    /// Build the restitution tables (V_out and e of single collisions over the two
+    /// dimensionless numbers, k and the impact speed) with the ODE, on the committed master
+    /// tables, and write crates/thresholds/data/restitution_k*.csv.
+    RestitutionTable {
+        /// Recompute a sample of the committed values instead, and fail if the model no longer
+        /// gives them.
+        #[arg(long)]
+        check: bool,
+        /// Only the tables of these indices (k = 0.005 2^(i/3)), without the k cells.
+        #[arg(long, value_delimiter = ',')]
+        only: Vec<usize>,
     },
     /// Build the Python package's wheel (maturin, PyO3's stable ABI: one wheel for every
     /// CPython 3.9 or newer on this platform, checked for manylinux compliance) into
@@ -63,11 +82,18 @@ fn main() -> ExitCode {
         Command::Wheel { profile } => xtask::wheel::build(&workspace_root(), &profile).map(|w| {
             println!("{}", w.display());
         }),
-        Command::MasterTable { check } => {
+        Command::RestitutionTable { check, only } => {
             if check {
-                xtask::master_table::run_check()
+                xtask::restitution_table::run_check(&workspace_root())
             } else {
-                xtask::master_table::run_build(&workspace_root())
+                xtask::restitution_table::run_build(&workspace_root(), &only)
+            }
+        }
+        Command::MasterTable { check, part, only } => {
+            if check {
+                xtask::master_table::run_check(&workspace_root())
+            } else {
+                xtask::master_table::run_build(&workspace_root(), part, &only)
             }
         }
         Command::Test {

@@ -1,31 +1,68 @@
-//! `cargo xtask master-table [--check]`: build the master tables of V_stick / V_stick,JKR with
-//! the exact search and write them to `crates/thresholds/data/master_k<k>.csv`, or recompute a
-//! sample of their nodes and fail if the model no longer gives them.
+//! `cargo xtask master-table [--part ends|tables|kcheck] [--check]`: build the master tables of
+//! V_stick / V_stick,JKR with the exact search and write them to `crates/thresholds/data/`
+//! (`master_ends.csv`, the end curves and the checks between tables of neighbouring k;
+//! `master_k<k>.csv`, one table a k), or recompute a sample of their nodes and end points and
+//! fail if the model no longer gives them.
 
 use crate::figures::Error;
 use numerics::format::number;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
-use thresholds::master::build::{build, check_nodes, BuildConfig};
-use thresholds::master::STANDARD_K;
-use thresholds::MasterTable;
+use thresholds::master::build::cells::build_table;
+use thresholds::master::build::check::{check_ends, check_nodes, Recomputed};
+use thresholds::master::build::ends::{build_ends, repair_ends};
+use thresholds::master::build::kcheck::k_checks;
+use thresholds::master::build::BuildConfig;
+use thresholds::master::format::{parse_ends, parse_table, EndsData, TableData};
+use thresholds::master::{ends_to_text, table_to_text};
 
-/// `--check` recomputes every this-many-th node (about 350 of each table's 15 000): a change of
-/// the model moves them all, so a sample finds it, in seconds.
-pub const CHECK_EVERY: usize = 40;
+/// `--check` recomputes every this-many-th node of each table (about 120 of its 30 000 values):
+/// a change of the model moves them all, so a sample finds it, in seconds.
+pub const CHECK_EVERY: usize = 250;
+
+/// `--check` recomputes every this-many-th point of the end curves (about 40 of 33 000).
+pub const CHECK_ENDS_EVERY: usize = 800;
 
 /// A recomputed node must equal the committed one to this relative tolerance: a node is the
 /// search without a hint, which is deterministic, so any change comes from the model or its
-/// numerics (the file keeps 13 significant figures).
-pub const CHECK_REL_TOL: f64 = 1e-11;
+/// numerics (the file keeps 12 significant figures).
+pub const CHECK_REL_TOL: f64 = 1e-10;
 
-/// The file of the table of `k` under `root`.
-pub fn table_path(root: &Path, k: f64) -> std::path::PathBuf {
-    root.join("crates/thresholds/data")
-        .join(format!("master_k{}.csv", number(k)))
+/// A recomputed end point must equal the committed one to this (in x): the root is found anew
+/// from another first bracket, to 1e-11.
+pub const CHECK_END_TOL: f64 = 1e-9;
+
+/// Which part to build.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Part {
+    /// Everything, in order.
+    All,
+    /// The end curves (`master_ends.csv`, without the k checks).
+    Ends,
+    /// The end curves' missing points only, keeping the committed ones.
+    EndsRepair,
+    /// The tables of every k on the committed end curves.
+    Tables,
+    /// The checks between tables of neighbouring k, into `master_ends.csv`.
+    Kcheck,
 }
 
-/// The commit the table is built at (with `-dirty` for uncommitted changes), for its header.
+/// The directory of the committed tables.
+pub fn data_dir(root: &Path) -> PathBuf {
+    root.join("crates/thresholds/data")
+}
+
+/// The file of the table of `k` under `root`.
+pub fn table_path(root: &Path, k: f64) -> PathBuf {
+    data_dir(root).join(format!("master_k{k:.5}.csv"))
+}
+
+/// The file of the end curves under `root`.
+pub fn ends_path(root: &Path) -> PathBuf {
+    data_dir(root).join("master_ends.csv")
+}
+
+/// The commit the tables are built at (with `-dirty` for uncommitted changes), for the headers.
 fn commit(root: &Path) -> String {
     let git = |args: &[&str]| {
         std::process::Command::new("git")
@@ -45,43 +82,129 @@ fn commit(root: &Path) -> String {
     }
 }
 
-/// Builds both standard tables and writes them.
-pub fn run_build(root: &Path) -> Result<(), Error> {
+fn read(path: &Path) -> Result<String, Error> {
+    std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()).into())
+}
+
+/// The committed end curves.
+pub fn committed_ends(root: &Path) -> Result<EndsData, Error> {
+    let path = ends_path(root);
+    parse_ends(&read(&path)?)
+        .map_err(|e| format!("{}, line {}: {}", path.display(), e.line, e.problem).into())
+}
+
+/// The committed tables, in increasing k: those of the standard grid that exist (the tables are
+/// built one k at a time; the k axis answers between the tables present).
+pub fn committed_tables(root: &Path) -> Result<Vec<TableData>, Error> {
+    let cfg = BuildConfig::standard();
+    cfg.table_ks()
+        .iter()
+        .map(|&k| table_path(root, k))
+        .filter(|path| path.exists())
+        .map(|path| {
+            parse_table(&read(&path)?)
+                .map_err(|e| format!("{}, line {}: {}", path.display(), e.line, e.problem).into())
+        })
+        .collect()
+}
+
+/// Builds `part` (and `only` these table indices, if given) and writes it.
+pub fn run_build(root: &Path, part: Part, only: &[usize]) -> Result<(), Error> {
     let start = Instant::now();
-    let commit = commit(root);
-    for k in STANDARD_K {
-        let progress = |s: &str| eprintln!("k = {k}, {:.0} s: {s}", start.elapsed().as_secs_f64());
-        let mut table = build(&BuildConfig::standard(k), &progress)?;
-        table.prepend_header(&[
-            "command: cargo xtask master-table".to_string(),
-            format!("commit: {commit}"),
-        ]);
-        let path = table_path(root, k);
-        std::fs::write(&path, table.to_text())?;
-        eprintln!(
-            "wrote {} in {:.0} s",
-            path.display(),
-            start.elapsed().as_secs_f64()
-        );
+    let cfg = BuildConfig::standard();
+    let stamp = [
+        "command: cargo xtask master-table".to_string(),
+        format!("commit: {}", commit(root)),
+    ];
+    let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
+    if matches!(part, Part::All | Part::Ends) {
+        let mut ends = build_ends(&cfg, &progress);
+        ends.header.splice(0..0, stamp.iter().cloned());
+        std::fs::write(ends_path(root), ends_to_text(&ends))?;
+        progress(&format!("wrote {}", ends_path(root).display()));
+    }
+    if part == Part::EndsRepair {
+        let previous = committed_ends(root)?;
+        let mut ends = repair_ends(&cfg, Some(&previous), &progress);
+        ends.header.splice(0..0, stamp.iter().cloned());
+        std::fs::write(ends_path(root), ends_to_text(&ends))?;
+        progress(&format!("wrote {}", ends_path(root).display()));
+    }
+    if matches!(part, Part::All | Part::Tables) {
+        let ends = committed_ends(root)?;
+        for i in 0..cfg.table_k.2 {
+            if !only.is_empty() && !only.contains(&i) {
+                continue;
+            }
+            let mut t = build_table(&cfg, i, &ends, &progress)?;
+            t.header.splice(0..0, stamp.iter().cloned());
+            let path = table_path(root, t.k);
+            std::fs::write(&path, table_to_text(&t))?;
+            progress(&format!("wrote {}", path.display()));
+        }
+    }
+    if matches!(part, Part::All | Part::Kcheck) {
+        let ends = committed_ends(root)?;
+        let tables = committed_tables(root)?;
+        let mut checked = k_checks(&cfg, &tables, &ends, &progress)?;
+        checked
+            .header
+            .retain(|h| !h.starts_with("commit:") && !h.starts_with("command:"));
+        checked.header.splice(0..0, stamp.iter().cloned());
+        std::fs::write(ends_path(root), ends_to_text(&checked))?;
+        progress(&format!(
+            "wrote {} with the k checks",
+            ends_path(root).display()
+        ));
     }
     Ok(())
 }
 
-/// Recomputes a sample of the committed tables' nodes; an error naming the first that moved.
-pub fn run_check() -> Result<(), Error> {
-    for k in STANDARD_K {
-        let table = MasterTable::standard(k).ok_or(format!("no committed table for k = {k}"))?;
-        let checked = check_nodes(table, CHECK_EVERY)?;
-        if let Some(&(x, y, f, again)) = checked.iter().find(|(_, _, f, again)| {
-            (again / f - 1.0).abs().is_nan() || (again / f - 1.0).abs() > CHECK_REL_TOL
+fn first_moved(all: &[Recomputed], tol: impl Fn(&Recomputed) -> bool) -> Option<&Recomputed> {
+    all.iter().find(|r| !tol(r))
+}
+
+/// Recomputes a sample of the committed tables' nodes and end points; an error naming the first
+/// that moved.
+pub fn run_check(root: &Path) -> Result<(), Error> {
+    let ends = committed_ends(root)?;
+    let checked = check_ends(&ends, CHECK_ENDS_EVERY)?;
+    if let Some(r) = first_moved(&checked, |r| (r.now - r.stored).abs() <= CHECK_END_TOL) {
+        return Err(format!(
+            "the master tables' end curves are stale: {} is {}, the model now gives {}; run `cargo xtask master-table`",
+            r.what, r.stored, r.now
+        )
+        .into());
+    }
+    eprintln!(
+        "master-table --check: {} end points recomputed, all within {}",
+        checked.len(),
+        number(CHECK_END_TOL)
+    );
+    let tables = committed_tables(root)?;
+    let intervals = ends.kcheck.len() / ends.kcheck_y.2.max(1);
+    if intervals != tables.len().saturating_sub(1) {
+        eprintln!(
+            "master-table --check: the k checks cover {intervals} intervals, the {} tables make {}: \
+             only the tables' own k are answered until `cargo xtask master-table --part kcheck`",
+            tables.len(),
+            tables.len().saturating_sub(1)
+        );
+    }
+    for t in tables {
+        let checked = check_nodes(&t, CHECK_EVERY)?;
+        if let Some(r) = first_moved(&checked, |r| {
+            (r.now / r.stored - 1.0).abs() <= CHECK_REL_TOL
         }) {
             return Err(format!(
-                "the master table of k = {k} is stale: at x = log10 c_D = {x}, y = log10(c_D c_a) = {y} it holds F = {f}, the model now gives {again}; run `cargo xtask master-table`"
+                "the master table of k = {} is stale: {} is {}, the model now gives {}; run `cargo xtask master-table`",
+                t.k, r.what, r.stored, r.now
             )
             .into());
         }
         eprintln!(
-            "master-table --check: k = {k}: {} nodes recomputed, all within {}",
+            "master-table --check: k = {}: {} values recomputed, all within {}",
+            t.k,
             checked.len(),
             number(CHECK_REL_TOL)
         );

@@ -119,7 +119,7 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
             .args(["test", "--workspace"]))?;
         // a change of the model must not leave the committed master tables stale
         eprintln!("+ cargo xtask master-table --check");
-        crate::master_table::run_check()?;
+        crate::master_table::run_check(root)?;
     }
     if !parts.python {
         return Ok(());

@@ -333,24 +333,24 @@ pub struct SearchArgs {
     pub method: MethodArg,
 }
 
-/// How thresholds are answered: the exact search, or the master table where it vouches for its
-/// accuracy (microseconds instead of milliseconds).
+/// How thresholds are answered: the master tables where they vouch for their accuracy
+/// (microseconds), or the exact search (milliseconds).
 #[derive(Debug, Clone, Args)]
 pub struct MethodArg {
-    /// search: the exact search (20-100 collisions); table: the master table of V_stick /
-    /// V_stick,JKR over the two dimensionless numbers, within 1e-5 of the search where it vouches
-    /// for its accuracy, the search elsewhere ("method" in the output says which answered).
-    #[arg(long, value_enum, ignore_case = true, default_value = "search")]
+    /// table (default): the master tables of V_stick / V_stick,JKR over the two dimensionless
+    /// numbers and k, within 1e-5 of the search where they vouch for it, the search elsewhere;
+    /// search: the exact search (20-100 collisions). "method" in the output says which answered.
+    #[arg(long, value_enum, ignore_case = true, default_value = "table")]
     pub method: MethodName,
 }
 
 /// The values of `--method`.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, ValueEnum)]
 pub enum MethodName {
+    /// The master tables, the search where they do not vouch.
+    Table,
     /// The exact search.
     Search,
-    /// The master table, the search where it does not vouch.
-    Table,
 }
 
 impl From<MethodName> for thresholds::ThresholdMethod {

@@ -14,7 +14,7 @@ use thresholds::{
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let opts = SearchOptions {
         parallel: false,
-        ..SearchOptions::default()
+        ..SearchOptions::exact()
     };
     let mut cases: Vec<(String, Contact, f64, Vec<f64>)> = Vec::new();
     let co2 = Contact::new(Material::co2(), Geometry::identical(60e-6))?;

@@ -1,20 +1,24 @@
-//! The master table against the exact search at random points over the whole domain of the
-//! "Instant V_stick" issue: `docs/performance.md`, "Master table".
+//! The master tables over the whole domain of the "Instant everywhere" issue: how many random
+//! points they answer, how fast, and how close to the exact search (`docs/performance.md`,
+//! "Master tables").
 //!
 //! ```sh
-//! cargo run --release -p thresholds --example table_accuracy -- 2000
+//! cargo run --release -p thresholds --example table_accuracy -- 20000 2000
 //! ```
-//! Each point draws gamma_SV (0.01-0.3 J/m^2), E (0.5-200 GPa), the density (500-5000 kg/m^3)
-//! and the reduced radius R (5 nm - 1 cm) log-uniformly, nu (0.1-0.45) uniformly, two identical
-//! spheres (R1 = 2R) or a sphere on a wall (R1 = R), k = 0.01 or 0.02, and T_vis log-uniformly
-//! from 1e-16 s to 1e-3 s (beyond the cliff for every grain), until the table has answered at
-//! the given number of points. There its V_stick and V_double_onset are compared with the
-//! default exact search; prints how many points were drawn, how many the search refused or
-//! failed at, and the percentiles of the relative differences.
+//! Each point draws gamma_SV (0.01-0.3 J/m^2), E (0.5-200 GPa), the density (500-5000 kg/m^3),
+//! the reduced radius R (5 nm - 1 cm) and k (0.005-0.05) log-uniformly, nu (0.1-0.45)
+//! uniformly, two identical spheres (R1 = 2R) or a sphere on a wall (R1 = R), and T_vis
+//! log-uniformly from 1e-16 s to 1e-3 s (beyond the cliff for every grain). The first number
+//! of points is answered with the default method (the tables, the search where they decline);
+//! on the second number of them (a sample), the tables' answers are compared with the exact
+//! search: both thresholds, and the "no bouncing" verdicts.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
+use rayon::prelude::*;
+use std::time::Instant;
 use thresholds::{
-    sticking_thresholds, Contact, CrackLaw, Geometry, Material, SearchOptions, ThresholdMethod,
+    sticking_thresholds, Contact, CrackLaw, Geometry, Material, SearchOptions, StickingThresholds,
+    ThresholdMethod,
 };
 
 /// A small deterministic generator (SplitMix64), so that a run is repeatable.
@@ -33,6 +37,32 @@ impl Rng {
     }
 }
 
+struct Point {
+    contact: Contact,
+    k: f64,
+    t_vis: f64,
+}
+
+fn draw(rng: &mut Rng) -> Point {
+    let m = Material {
+        gamma_sv: rng.log_uniform(0.01, 0.3),
+        young: rng.log_uniform(0.5e9, 200e9),
+        poisson: 0.1 + 0.35 * rng.next(),
+        density: rng.log_uniform(500.0, 5000.0),
+    };
+    let r = rng.log_uniform(5e-9, 1e-2);
+    let geometry = if rng.next() < 0.5 {
+        Geometry::wall(r)
+    } else {
+        Geometry::identical(2.0 * r)
+    };
+    Point {
+        contact: Contact::new(m, geometry).unwrap(),
+        k: rng.log_uniform(0.005, 0.05),
+        t_vis: rng.log_uniform(1e-16, 1e-3),
+    }
+}
+
 fn percentile(sorted: &[f64], p: f64) -> f64 {
     if sorted.is_empty() {
         return f64::NAN;
@@ -41,61 +71,87 @@ fn percentile(sorted: &[f64], p: f64) -> f64 {
 }
 
 fn main() {
-    let n: usize = std::env::args().nth(1).map_or(2000, |s| s.parse().unwrap());
-    let laws = [CrackLaw::new(0.01).unwrap(), CrackLaw::new(0.02).unwrap()];
+    let mut args = std::env::args().skip(1);
+    let n: usize = args.next().map_or(20000, |s| s.parse().unwrap());
+    let sample: usize = args.next().map_or(2000, |s| s.parse().unwrap());
     let mut rng = Rng(2026);
-    let (mut answered, mut failed, mut wall_points) = (0, 0, 0);
+    let points: Vec<Point> = (0..n).map(|_| draw(&mut rng)).collect();
+    let laws: Vec<CrackLaw> = points.iter().map(|p| CrackLaw::new(p.k).unwrap()).collect();
+    let start = Instant::now();
+    let answers: Vec<Option<StickingThresholds>> = points
+        .par_iter()
+        .zip(&laws)
+        .map(|(p, law)| {
+            sticking_thresholds(&p.contact, law, p.t_vis, &SearchOptions::default()).ok()
+        })
+        .collect();
+    let elapsed = start.elapsed().as_secs_f64();
+    let by_table = answers
+        .iter()
+        .filter(|a| a.is_some_and(|a| a.method == ThresholdMethod::Table))
+        .count();
+    let refused = answers.iter().filter(|a| a.is_none()).count();
+    let no_bounce = answers
+        .iter()
+        .filter(|a| a.is_some_and(|a| a.method == ThresholdMethod::Table && a.v_stick.is_none()))
+        .count();
+    println!(
+        "{n} points in {elapsed:.2} s with the default method: the tables answered {by_table} ({:.3} %, {no_bounce} of them 'no bouncing'), the search {} , refused or failed {refused}",
+        100.0 * by_table as f64 / n as f64,
+        n - by_table - refused
+    );
+    // the sample: the first `sample` points the tables answered, against the exact search
+    let compared: Vec<(usize, Option<StickingThresholds>)> = answers
+        .iter()
+        .enumerate()
+        .filter(|(_, a)| a.is_some_and(|a| a.method == ThresholdMethod::Table))
+        .take(sample)
+        .map(|(i, _)| i)
+        .collect::<Vec<_>>()
+        .par_iter()
+        .map(|&i| {
+            let p = &points[i];
+            (
+                i,
+                sticking_thresholds(&p.contact, &laws[i], p.t_vis, &SearchOptions::exact()).ok(),
+            )
+        })
+        .collect();
     let (mut d_stick, mut d_onset) = (Vec::new(), Vec::new());
+    let (mut verdicts, mut verdicts_differ, mut failed) = (0, 0, 0);
     let mut worst = (0.0, String::new());
-    let mut drawn = 0;
-    while answered < n {
-        drawn += 1;
-        let m = Material {
-            gamma_sv: rng.log_uniform(0.01, 0.3),
-            young: rng.log_uniform(0.5e9, 200e9),
-            poisson: 0.1 + 0.35 * rng.next(),
-            density: rng.log_uniform(500.0, 5000.0),
-        };
-        let r = rng.log_uniform(5e-9, 1e-2);
-        let wall = rng.next() < 0.5;
-        let geometry = if wall {
-            Geometry::wall(r)
-        } else {
-            Geometry::identical(2.0 * r)
-        };
-        let law = &laws[usize::from(rng.next() < 0.5)];
-        let t_vis = rng.log_uniform(1e-16, 1e-3);
-        let c = Contact::new(m, geometry).unwrap();
-        let table = SearchOptions {
-            method: ThresholdMethod::Table,
-            ..SearchOptions::default()
-        };
-        let from_table = sticking_thresholds(&c, law, t_vis, &table).ok();
-        let Some(t) = from_table.filter(|t| t.method == ThresholdMethod::Table) else {
-            continue;
-        };
-        answered += 1;
-        wall_points += usize::from(wall);
-        let Ok(s) = sticking_thresholds(&c, law, t_vis, &SearchOptions::default()) else {
+    for (i, s) in &compared {
+        let Some(s) = s else {
             failed += 1;
             continue;
         };
-        let rel = |a: Option<f64>, b: Option<f64>| match (a, b) {
-            (Some(a), Some(b)) => (a / b - 1.0).abs(),
-            (None, None) => 0.0,
-            _ => f64::INFINITY,
+        let t = answers[*i].unwrap();
+        let mut rel = |a: Option<f64>, b: Option<f64>, into: &mut Vec<f64>| match (a, b) {
+            (Some(a), Some(b)) => {
+                into.push((a / b - 1.0).abs());
+                (a / b - 1.0).abs()
+            }
+            (None, None) => {
+                verdicts += 1;
+                0.0
+            }
+            _ => {
+                verdicts_differ += 1;
+                f64::INFINITY
+            }
         };
-        let (ds, d_o) = (
-            rel(t.v_stick, s.v_stick),
-            rel(t.v_double_onset, s.v_double_onset),
-        );
-        if ds.max(d_o) > worst.0 {
-            let d = c.dimensionless(t_vis);
+        let e = rel(t.v_stick, s.v_stick, &mut d_stick).max(rel(
+            t.v_double_onset,
+            s.v_double_onset,
+            &mut d_onset,
+        ));
+        if e > worst.0 {
+            let d = points[*i].contact.dimensionless(points[*i].t_vis);
             worst = (
-                ds.max(d_o),
+                e,
                 format!(
-                    "k = {}, x = {:.3}, y = {:.3}: table {:?} / {:?}, search {:?} / {:?}",
-                    law.k(),
+                    "k = {:.5}, x = {:.4}, y = {:.4}: table {:?} / {:?}, search {:?} / {:?}",
+                    points[*i].k,
                     d.c_d.log10(),
                     (d.c_d * d.c_a).log10(),
                     t.v_stick,
@@ -105,17 +161,17 @@ fn main() {
                 ),
             );
         }
-        d_stick.push(ds);
-        d_onset.push(d_o);
     }
     d_stick.sort_by(f64::total_cmp);
     d_onset.sort_by(f64::total_cmp);
     println!(
-        "{drawn} points drawn: the table answered {answered} ({wall_points} on a wall), the search refused or failed at {failed} of those"
+        "sample of {}: the search refused or failed at {failed}; 'none below v_max' verdicts: {verdicts} the same, {verdicts_differ} different",
+        compared.len()
     );
     for (name, d) in [("V_stick", &d_stick), ("V_double_onset", &d_onset)] {
         println!(
-            "{name}: median {:.1e}, 90 % {:.1e}, 99 % {:.1e}, 99.9 % {:.1e}, max {:.1e}",
+            "{name} ({} values): median {:.1e}, 90 % {:.1e}, 99 % {:.1e}, 99.9 % {:.1e}, max {:.1e}",
+            d.len(),
             percentile(d, 0.5),
             percentile(d, 0.9),
             percentile(d, 0.99),

@@ -4,7 +4,7 @@
 //! ```sh
 //! cargo run --release -p thresholds --example tight_reference
 //! ```
-//! For each case, V_stick and V_double_onset with `SearchOptions::default()` (relative
+//! For each case, V_stick and V_double_onset with `SearchOptions::exact()` (relative
 //! tolerance 1e-6) and with a reference search (`SearchOptions::reference()`: BDF at rtol 1e-11, bracket 1e-9); prints the
 //! relative differences and the number of collisions of the default search, then the same
 //! search without rebound restarts (`SearchOptions::restarts`).
@@ -31,10 +31,10 @@ fn main() {
         ("co2", 1e-8),
     ]) {
         let r = sticking_thresholds(&contact, &law, t_vis, &reference).unwrap();
-        let d = sticking_thresholds(&contact, &law, t_vis, &SearchOptions::default()).unwrap();
+        let d = sticking_thresholds(&contact, &law, t_vis, &SearchOptions::exact()).unwrap();
         let no_restarts = SearchOptions {
             restarts: false,
-            ..SearchOptions::default()
+            ..SearchOptions::exact()
         };
         let n = sticking_thresholds(&contact, &law, t_vis, &no_restarts).unwrap();
         let rel = |a: Option<f64>, b: Option<f64>| a.unwrap() / b.unwrap() - 1.0;

@@ -38,7 +38,7 @@ fn main() {
                 method,
                 ..SolverOptions::at_rtol(rtol)
             },
-            ..SearchOptions::default()
+            ..SearchOptions::exact()
         };
         let th = sticking_thresholds(contact, &law, t_vis, &opts).unwrap();
         (th.v_stick.unwrap(), th.v_double_onset.unwrap())

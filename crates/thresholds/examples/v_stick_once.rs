@@ -28,7 +28,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let contact = Contact::new(material, Geometry::identical(radius))?;
     let opts = SearchOptions {
         parallel: false,
-        ..SearchOptions::default()
+        ..SearchOptions::exact()
     };
     let th = sticking_thresholds(&contact, &law, t_vis, &opts)?;
     println!(

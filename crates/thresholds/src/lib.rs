@@ -50,6 +50,7 @@ pub mod fit;
 pub mod laws;
 pub mod master;
 pub mod paper;
+pub mod restitution;
 pub mod search;
 pub mod stick;
 pub mod sweep;
@@ -65,8 +66,9 @@ pub use greenwood::{CrackLaw, GreenwoodError};
 pub use laws::{
     fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_EXPONENT, T_VIS_LAWS, V_FRAG_FACTOR,
 };
-pub use master::{MasterTable, Ratios};
+pub use master::{MasterTables, Ratios, F_TOP};
 pub use numerics::OutOfRange;
+pub use restitution::{RestitutionTables, TableRebound};
 /// Default radius R1 (m) of the CLI and the Python package: the typical CO2 grain of Musiolik et
 /// al. (2016a), [`paper::MUSIOLIK_2016A`].
 pub const DEFAULT_RADIUS: f64 = paper::MUSIOLIK_2016A.radius;

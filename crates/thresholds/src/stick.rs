@@ -84,12 +84,13 @@ pub const DEFAULT_REL_TOL: f64 = 1e-6;
 /// How a threshold is answered.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
 pub enum ThresholdMethod {
-    /// The exact search: 20-100 collisions, milliseconds (the default).
-    #[default]
+    /// The exact search: 20-100 collisions, milliseconds.
     Search,
-    /// The master table ([`crate::MasterTable`]): microseconds, within 1e-5 of the search
-    /// where it vouches for its accuracy; elsewhere (near the cliff, outside its domain, a k
-    /// other than 0.01 and 0.02) the exact search answers, and the result says so.
+    /// The master tables ([`crate::MasterTables`], the default): about a microsecond, within
+    /// 1e-5 of the search where they vouch for their accuracy; elsewhere (a thin band at the
+    /// cliff, k outside 0.005-0.05, a `rel_tol` below [`crate::master::TABLE_REL_TOL`] asked
+    /// for explicitly) the exact search answers, and the result says so.
+    #[default]
     Table,
 }
 
@@ -137,8 +138,8 @@ pub struct SearchOptions {
     /// final bracket) by less than that bracket (`docs/performance.md`, "Rebound restarts" and
     /// "Accuracy"). Default on; off for a reference.
     pub restarts: bool,
-    /// How to answer: the exact search (default) or the master table where it vouches for its
-    /// accuracy ([`ThresholdMethod`]).
+    /// How to answer: the master tables where they vouch for their accuracy (the default) or
+    /// the exact search ([`ThresholdMethod`]).
     pub method: ThresholdMethod,
 }
 
@@ -176,6 +177,22 @@ impl SearchOptions {
                 ..SolverOptions::default()
             },
             restarts: false,
+            ..SearchOptions::exact()
+        }
+    }
+
+    /// The default settings with the exact search for every threshold
+    /// ([`ThresholdMethod::Search`]), as `--method search` and `method="search"`.
+    ///
+    /// # Example
+    /// ```
+    /// use thresholds::{SearchOptions, ThresholdMethod};
+    /// assert_eq!(SearchOptions::exact().method, ThresholdMethod::Search);
+    /// assert_eq!(SearchOptions::default().method, ThresholdMethod::Table);
+    /// ```
+    pub fn exact() -> SearchOptions {
+        SearchOptions {
+            method: ThresholdMethod::Search,
             ..SearchOptions::default()
         }
     }
@@ -219,7 +236,7 @@ impl Default for SearchOptions {
             parallel: true,
             hint: None,
             restarts: true,
-            method: ThresholdMethod::Search,
+            method: ThresholdMethod::Table,
         }
     }
 }

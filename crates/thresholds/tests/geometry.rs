@@ -12,7 +12,7 @@ use thresholds::{
 fn thresholds(m: Material, g: Geometry, t_vis: f64) -> StickingThresholds {
     let law = CrackLaw::new(0.01).unwrap();
     let c = Contact::new(m, g).unwrap();
-    sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap()
+    sticking_thresholds(&c, &law, t_vis, &SearchOptions::exact()).unwrap()
 }
 
 fn rel(a: f64, b: f64) -> f64 {

@@ -30,7 +30,7 @@ fn law() -> CrackLaw {
 }
 
 fn v_stick(c: &Contact, t_vis: f64) -> f64 {
-    sticking_thresholds(c, &law(), t_vis, &SearchOptions::default())
+    sticking_thresholds(c, &law(), t_vis, &SearchOptions::exact())
         .unwrap()
         .v_stick
         .unwrap()
@@ -41,7 +41,7 @@ fn v_stick(c: &Contact, t_vis: f64) -> f64 {
 /// regime on a 0.01 cm/s grid, so the transitions lie in (4.03, 4.04] and (4.13, 4.14] cm/s.
 #[test]
 fn section_4_4_transitions_co2_60um() {
-    let th = sticking_thresholds(&co2(60e-6), &law(), 1e-9, &SearchOptions::default()).unwrap();
+    let th = sticking_thresholds(&co2(60e-6), &law(), 1e-9, &SearchOptions::exact()).unwrap();
     let (vd, vs) = (
         th.v_double_onset.unwrap() * 100.0,
         th.v_stick.unwrap() * 100.0,
@@ -68,7 +68,7 @@ fn section_5_1_co2_range_ends() {
 /// points inside the exact range, the exact ends lie in (8.4e-11, 8.5e-11] and [1.97e-9, 1.98e-9).
 #[test]
 fn section_5_1_fit_co2() {
-    let fit = fit_t_vis(&co2(60e-6), &law(), 0.04, 0.02, &SearchOptions::default()).unwrap();
+    let fit = fit_t_vis(&co2(60e-6), &law(), 0.04, 0.02, &SearchOptions::exact()).unwrap();
     assert!(
         fit.t_vis_min > 8.4e-11 && fit.t_vis_min <= 8.5e-11,
         "{fit:?}"
@@ -85,7 +85,7 @@ fn section_5_1_fit_co2() {
 /// printed digits).
 #[test]
 fn section_5_2_h2o_fit() {
-    let opts = SearchOptions::default();
+    let opts = SearchOptions::exact();
     let a = fit_t_vis(&h2o(0.19), &law(), 0.73, 0.0, &opts)
         .unwrap()
         .t_vis;
@@ -127,7 +127,7 @@ fn section_7_1_v_frag_jkr() {
 #[test]
 fn jkr_limit() {
     let c = co2(60e-6);
-    let th = sticking_thresholds(&c, &law(), 1e-14, &SearchOptions::default()).unwrap();
+    let th = sticking_thresholds(&c, &law(), 1e-14, &SearchOptions::exact()).unwrap();
     let vs = th.v_stick.unwrap();
     assert!(
         (vs / c.v_stick_jkr() - 1.0).abs() < 1e-3,
@@ -137,7 +137,7 @@ fn jkr_limit() {
     let window = (vs - th.v_double_onset.unwrap()) / vs;
     assert!(window > 0.0 && window < 1e-4, "{window}");
     // T_vis = 0 is the JKR limit itself
-    let jkr = sticking_thresholds(&c, &law(), 0.0, &SearchOptions::default()).unwrap();
+    let jkr = sticking_thresholds(&c, &law(), 0.0, &SearchOptions::exact()).unwrap();
     assert_eq!(jkr.v_stick, Some(c.v_stick_jkr()));
 }
 
@@ -251,14 +251,14 @@ fn no_bouncing_is_reported_not_hidden() {
 #[test]
 fn fit_at_or_below_jkr_is_refused() {
     let c = co2(60e-6);
-    let err = fit_t_vis(&c, &law(), 0.016, 0.0, &SearchOptions::default()).unwrap_err();
+    let err = fit_t_vis(&c, &law(), 0.016, 0.0, &SearchOptions::exact()).unwrap_err();
     assert!(matches!(err, ThresholdsError::BelowJkr { .. }), "{err}");
     assert!(
         err.to_string()
             .contains(&numerics::format::number(c.v_stick_jkr())),
         "{err}"
     );
-    let fit = fit_t_vis(&c, &law(), 0.03, 0.02, &SearchOptions::default()).unwrap();
+    let fit = fit_t_vis(&c, &law(), 0.03, 0.02, &SearchOptions::exact()).unwrap();
     assert_eq!(fit.t_vis_min, 0.0);
     assert!(fit.t_vis > 0.0 && fit.t_vis_max > fit.t_vis);
 }
@@ -315,7 +315,7 @@ fn hinted_sweep_agrees_with_independent_searches() {
     let c = co2(60e-6);
     let law = law();
     let t_vis: Vec<f64> = (0..6).map(|i| 1e-11 * 10f64.powf(0.5 * i as f64)).collect();
-    let opts = SearchOptions::default();
+    let opts = SearchOptions::exact();
     let swept = sweep_t_vis(&c, &law, &t_vis, &opts).unwrap();
     let (mut n_swept, mut n_alone) = (0, 0);
     for (t, s) in t_vis.iter().zip(&swept) {

@@ -28,7 +28,7 @@ proptest! {
         let m = if h2o { Material::h2o() } else { Material::co2() };
         let c = Contact::new(m, Geometry::identical(10f64.powf(log_r1))).unwrap();
         let t_vis = 10f64.powf(log_t);
-        let th = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
+        let th = sticking_thresholds(&c, &law, t_vis, &SearchOptions::exact()).unwrap();
         let collider = Collider::new(c, &law, t_vis).unwrap();
         let outcome = |v: f64| collider.collide(v).unwrap().outcome;
         match (th.v_double_onset, th.v_stick) {
@@ -51,7 +51,7 @@ fn the_search_closes_near_the_cliff() {
     let c = Contact::new(Material::co2(), Geometry::identical(1.4565341716423927e-6)).unwrap();
     let law = CrackLaw::new(0.01).unwrap();
     let t_vis = 2.201629262225769e-10;
-    let th = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
+    let th = sticking_thresholds(&c, &law, t_vis, &SearchOptions::exact()).unwrap();
     let (vd, vs) = (th.v_double_onset.unwrap(), th.v_stick.unwrap());
     assert!(th.collisions < 200, "{} collisions", th.collisions);
     let collider = Collider::new(c, &law, t_vis).unwrap();
@@ -72,7 +72,7 @@ fn the_search_stays_at_positive_speeds_below_the_cliff() {
     let t_vis = 1.3825978050661468e-8;
     let opts = SearchOptions {
         v_max: Some(1586.0),
-        ..SearchOptions::default()
+        ..SearchOptions::exact()
     };
     let th = sticking_thresholds(&c, &law, t_vis, &opts).unwrap();
     let collider = Collider::new(c, &law, t_vis).unwrap();

@@ -47,7 +47,7 @@ impl Figure3 {
     pub fn compute(res: Resolution, progress: Progress) -> Result<Self, Error> {
         let law = CrackLaw::new(K)?;
         let c = co2_contact(MUSIOLIK_2016A.radius)?;
-        let th = sticking_thresholds(&c, &law, FIG2_T_VIS, &SearchOptions::default())?;
+        let th = sticking_thresholds(&c, &law, FIG2_T_VIS, &SearchOptions::exact())?;
         let (vd, vs) = (
             th.v_double_onset.ok_or("no double collisions")?,
             th.v_stick.ok_or("no bouncing")?,

@@ -28,7 +28,7 @@ impl Figure4 {
             Ok(ThresholdCurve {
                 parameter: k,
                 v_stick_jkr: c.v_stick_jkr(),
-                points: sweep_t_vis(&c, &CrackLaw::new(k)?, &t_vis, &SearchOptions::default())?,
+                points: sweep_t_vis(&c, &CrackLaw::new(k)?, &t_vis, &SearchOptions::exact())?,
             })
         })?;
         Ok(Self { curves })

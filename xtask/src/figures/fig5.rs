@@ -31,7 +31,7 @@ impl Figure5 {
             Ok(ThresholdCurve {
                 parameter: g,
                 v_stick_jkr: c.v_stick_jkr(),
-                points: sweep_t_vis(&c, &law, &t_vis, &SearchOptions::default())?,
+                points: sweep_t_vis(&c, &law, &t_vis, &SearchOptions::exact())?,
             })
         })?;
         Ok(Self { curves })

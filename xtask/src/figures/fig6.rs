@@ -41,7 +41,7 @@ impl Figure6 {
     /// Computes the figure.
     pub fn compute(res: Resolution, progress: Progress) -> Result<Self, Error> {
         let law = CrackLaw::new(K)?;
-        let opts = SearchOptions::default();
+        let opts = SearchOptions::exact();
         let fits = par_map("fig6", &["co2", "h2o"], progress, |&name| {
             if name == "co2" {
                 let e = MUSIOLIK_2016A;

@@ -53,7 +53,7 @@ impl Figure7 {
                 &c,
                 &law,
                 l.t_vis(r1),
-                &SearchOptions::default(),
+                &SearchOptions::exact(),
             )?)
         })?;
         let points = r1s

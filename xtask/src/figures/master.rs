@@ -1,7 +1,7 @@
 //! The master figure: V_stick / V_stick,JKR over the two dimensionless numbers c_D (drag) and
-//! c_D c_a (independent of T_vis), from the master table of k = 0.01, with the cliff beyond
-//! which nothing bounces and the paper's CO2 (60 um) and H2O (90 um) grains, which move along
-//! lines of constant c_D c_a as T_vis changes.
+//! c_D c_a (independent of T_vis), from the master tables at k = 0.01, with the cliff beyond
+//! which nothing bounces (x_s, where F reaches 1e4, a hair short of it) and the paper's CO2
+//! (60 um) and H2O (90 um) grains, which move along lines of constant c_D c_a as T_vis changes.
 
 use super::chart::*;
 use super::{co2_contact, h2o_with, linspace, par_map, Error, Progress, Resolution, K};
@@ -11,10 +11,12 @@ use numerics::format::number;
 use plotters::prelude::*;
 use std::path::Path;
 use thresholds::paper::{MUSIOLIK_2016A, MUSIOLIK_2016B};
-use thresholds::{MasterTable, TVisLaw};
+use thresholds::{MasterTables, TVisLaw, DEFAULT_V_MAX_OVER_JKR};
 
 /// The levels of F = V_stick / V_stick,JKR that separate the colour bands.
-pub const LEVELS: [f64; 9] = [1.0003, 1.001, 1.01, 1.1, 1.5, 2.0, 5.0, 10.0, 30.0];
+pub const LEVELS: [f64; 11] = [
+    1.0003, 1.001, 1.01, 1.1, 1.5, 2.0, 5.0, 10.0, 30.0, 100.0, 300.0,
+];
 
 /// A paper's grain on the figure: a line of constant y, with marked relaxation times.
 #[derive(Debug, Clone)]
@@ -34,9 +36,11 @@ pub struct FigureMaster {
     pub x: Vec<f64>,
     /// y = log10(c_D c_a) of the grid.
     pub y: Vec<f64>,
-    /// F at each (x, y), row by row in y; NaN where the table does not vouch.
+    /// F at each (x, y), row by row in y (up to the default search limit, 1000); NaN where the
+    /// tables do not vouch or nothing bounces below that limit.
     pub f: Vec<Vec<f64>>,
-    /// `(y, x)` of the cliff: no bouncing up to 1000 V_stick,JKR beyond x.
+    /// `(y, x_s)` of the cliff: F reaches 1e4 at x_s, and nothing bounces below 1e4
+    /// V_stick,JKR beyond it.
     pub cliff: Vec<(f64, f64)>,
     /// The paper's grains.
     pub grains: Vec<Grain>,
@@ -57,14 +61,24 @@ fn grain(label: &str, c: &Contact, marks: &[(f64, &str)]) -> Grain {
 impl FigureMaster {
     /// Computes the figure from the committed table of k = 0.01.
     pub fn compute(res: Resolution, progress: Progress) -> Result<Self, Error> {
-        let table = MasterTable::standard(K).ok_or("no master table for k = 0.01")?;
-        let x = linspace(-13.0, 1.0, res.pick(141, 5));
+        let tables = MasterTables::standard();
+        let ends = tables.ends().ok_or("the master tables are not embedded")?;
+        let x = linspace(-13.0, 1.0, res.pick(281, 5));
         let y = linspace(-5.75, 5.0, res.pick(87, 4));
         let f = par_map("fig_master", &y, progress, |&y| {
             Ok(x.iter()
-                .map(|&x| table.ratios_at(x, y).map_or(f64::NAN, |r| r.v_stick))
+                .map(|&x| {
+                    tables
+                        .ratios_at(x, y, K, DEFAULT_V_MAX_OVER_JKR)
+                        .and_then(|r| r.v_stick)
+                        .unwrap_or(f64::NAN)
+                })
                 .collect())
         })?;
+        let cliff = y
+            .iter()
+            .filter_map(|&y| ends.at(y, K).map(|e| (y, e.x_s)))
+            .collect();
         let co2 = co2_contact(MUSIOLIK_2016A.radius)?;
         let h2o = Contact::new(h2o_with(0.1), Geometry::identical(MUSIOLIK_2016B.radius))?;
         let grains = vec![
@@ -91,11 +105,7 @@ impl FigureMaster {
             x,
             y,
             f,
-            cliff: table
-                .cliff()
-                .into_iter()
-                .filter(|c| c.1.is_finite())
-                .collect(),
+            cliff,
             grains,
         })
     }
@@ -105,8 +115,8 @@ impl FigureMaster {
         let mut grid = Table::new(
             "fig_master.csv",
             vec![
-                "Master figure: F = V_stick/V_stick,JKR over x = log10 c_D and y = log10(c_D c_a), k = 0.01, from the master table".into(),
-                "c_D = 2 (T_vis/nu^2) E* a_eq t0/m*, c_a = E* gamma t0/(sigma0^2 T_vis a_eq): every material, size and geometry; empty where the table does not vouch (near and beyond the cliff)".into(),
+                "Master figure: F = V_stick/V_stick,JKR over x = log10 c_D and y = log10(c_D c_a), k = 0.01, from the master tables".into(),
+                "c_D = 2 (T_vis/nu^2) E* a_eq t0/m*, c_a = E* gamma t0/(sigma0^2 T_vis a_eq): every material, size and geometry; empty where nothing bounces below 1000 V_stick,JKR (near and beyond the cliff) or the tables do not vouch".into(),
                 "units: x, y, f dimensionless".into(),
             ],
             &["x", "y", "f"],
@@ -119,7 +129,7 @@ impl FigureMaster {
         let mut cliff = Table::new(
             "fig_master_cliff.csv",
             vec![
-                "Master figure: the cliff, the smallest x = log10 c_D without bouncing up to 1000 V_stick,JKR, for each row y of the table (k = 0.01)".into(),
+                "Master figure: the cliff, x_s = log10 c_D where V_stick reaches 1e4 V_stick,JKR (nothing bounces below that beyond it), at each y of the figure (k = 0.01), from the tables' end curves".into(),
                 "units: y, x dimensionless".into(),
             ],
             &["y", "x"],
@@ -178,11 +188,13 @@ impl FigureMaster {
                 self.cliff.iter().map(|&(y, x)| (x, y)),
                 BLACK.stroke_width(2),
             ))?
-            .label("cliff: no bouncing beyond")
+            .label("cliff x_s: V_stick = 1e4 V_stick,JKR, no bouncing beyond")
             .legend(legend_line(BLACK));
         chart
             .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())?
-            .label("white: F > 100 or no bouncing (the exact search answers)")
+            .label(
+                "white: F > 1000 (no bouncing below the default limit) or a thin band at the cliff",
+            )
             .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], WHITE.filled()));
         for (g, col) in self.grains.iter().zip([COLOURS[0], COLOURS[1]]) {
             let times: Vec<String> = g.marks.iter().map(|m| number(m.0)).collect();

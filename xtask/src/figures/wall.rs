@@ -34,7 +34,7 @@ impl FigureWall {
         let geometries = [Geometry::identical(e.radius), Geometry::wall(e.radius)];
         let out = par_map("fig_wall", &[0usize, 1], progress, |&i| {
             let c = Contact::new(Material::co2(), geometries[i])?;
-            let opts = SearchOptions::default();
+            let opts = SearchOptions::exact();
             let curve = ThresholdCurve {
                 parameter: i as f64,
                 v_stick_jkr: c.v_stick_jkr(),

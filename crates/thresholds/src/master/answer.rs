@@ -1,46 +1,339 @@
-//! The table's answer to a threshold search ([`crate::ThresholdMethod::Table`]).
+//! The tables' answer at a point: both ratios, or "beyond the search limit", or nothing where
+//! the tables cannot vouch (the caller then searches).
+//!
+//! For a query (x, y, k) and the search limit f_max = v_max / V_stick,JKR:
+//! 1. the end curves give x_s and x_on at (y, k) ([`super::ends`]);
+//! 2. F: for x >= x_s it exceeds [`F_TOP`]; else each table of the k stencil (the table of k
+//!    itself, or the four around it in ln k) gives g = ln(F - 1) at (y, u = ln(x_s - x)) where
+//!    vouched, and the cubic in ln k combines them; closer to x_s than vouched, F is at least its
+//!    value at the closest vouched distance (the rows' ratios increase towards the end);
+//! 3. F_on likewise, on the strip (w = ln(x_on - x)) for x within half a strip of x_s, on the
+//!    body elsewhere;
+//! 4. each ratio is compared with f_max: clearly below (an answer), clearly above (no
+//!    bouncing / no double collision below v_max), or within [`V_MAX_MARGIN`] of it (the search
+//!    decides).
 
-use super::MasterTable;
-use crate::{SearchOptions, StickingThresholds, ThresholdMethod};
-use contact::Contact;
-use greenwood::CrackLaw;
+use super::format::{Table, F_TOP};
+use super::interp::{interval, lagrange, stencil_start};
+use super::table::Curve;
+use super::MasterTables;
 
-/// A table answer is given only where V_stick is clearly on one side of the search limit
-/// `v_max`: within this relative distance of it the exact search decides.
-const V_MAX_MARGIN: f64 = 1e-4;
+/// A table answer is given only where a ratio is clearly on one side of the search limit
+/// f_max: within this relative distance of it the exact search decides.
+pub const V_MAX_MARGIN: f64 = 1e-4;
 
-/// The thresholds of `contact` at `t_vis` (s, > 0) from the master table of `law`'s k, or
-/// `None` where there is no table for k or it does not vouch for the point (the caller then
-/// searches). Where V_stick lies beyond the search limit `opts.v_max`, the answer is "no
-/// bouncing below v_max", as the search would say.
+/// Two k closer than this (relative) are the same k: a query at a table's own k uses that table
+/// alone.
+const SAME_K: f64 = 1e-12;
+
+/// What the tables say of one ratio.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Side {
+    /// The ratio, below the search limit.
+    Below(f64),
+    /// Above the search limit: nothing (bouncing or double collision) below v_max.
+    Above,
+    /// Not vouched for, or too close to the limit.
+    Unknown,
+}
+
+/// `g = ln(ratio - 1)` vouched for, or a lower bound of it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Eval {
+    Value(f64),
+    AtLeast(f64),
+    Unknown,
+}
+
+fn side(e: Eval, f_max: f64) -> Side {
+    match e {
+        Eval::Value(g) => {
+            let r = 1.0 + g.exp();
+            if r < f_max * (1.0 - V_MAX_MARGIN) {
+                Side::Below(r)
+            } else if r > f_max * (1.0 + V_MAX_MARGIN) {
+                Side::Above
+            } else {
+                Side::Unknown
+            }
+        }
+        Eval::AtLeast(g) if 1.0 + g.exp() > f_max * (1.0 + V_MAX_MARGIN) => Side::Above,
+        _ => Side::Unknown,
+    }
+}
+
+/// The tables that answer at k: one (k is a table's own) or four around k in ln k, with the
+/// interval of k between two tables (for the k checks).
+struct KStencil<'a> {
+    tables: Vec<&'a Table>,
+    /// ln k of the tables.
+    ln_k: Vec<f64>,
+    /// The k interval (between tables i and i + 1), `None` at a table's own k.
+    interval: Option<usize>,
+}
+
+impl MasterTables {
+    fn k_stencil(&self, k: f64) -> Option<KStencil<'_>> {
+        let ks = self.table_k();
+        if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
+            return Some(KStencil {
+                tables: vec![self.table(i)?],
+                ln_k: vec![k.ln()],
+                interval: None,
+            });
+        }
+        let n = ks.len();
+        if n < 4 || !(k > ks[0] && k < ks[n - 1]) {
+            return None;
+        }
+        let ln: Vec<f64> = ks.iter().map(|k| k.ln()).collect();
+        let i = interval(&ln, k.ln());
+        let s = stencil_start(i, n);
+        Some(KStencil {
+            tables: (s..s + 4).map(|t| self.table(t)).collect::<Option<_>>()?,
+            ln_k: ln[s..s + 4].to_vec(),
+            interval: Some(i),
+        })
+    }
+
+    /// `curve` at (x, y, k) from the stencil ([`super::table`]): plain where every table (and
+    /// the k check) vouches for it at x, else sheared at the distance to the end where they do
+    /// (this needs the end at (y, k)); closer to the end than vouched, at least the value at the
+    /// closest vouched point, where the rows' ratios increase towards the end.
+    fn eval(
+        &self,
+        ks: &KStencil,
+        curve: Curve,
+        x: f64,
+        y: f64,
+        end: Option<f64>,
+        ln_k: f64,
+    ) -> Eval {
+        self.eval_with(ks, curve, x, y, end, ln_k, true)
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn eval_with(
+        &self,
+        ks: &KStencil,
+        curve: Curve,
+        x: f64,
+        y: f64,
+        end: Option<f64>,
+        ln_k: f64,
+        k_checked: bool,
+    ) -> Eval {
+        let check = match ks.interval.filter(|_| k_checked) {
+            Some(i) => match self.k_check(i, y) {
+                Some(c) => Some(c),
+                None => return Eval::Unknown,
+            },
+            None => None,
+        };
+        let combine = |g: Vec<f64>| {
+            if g.len() == 1 {
+                g[0]
+            } else {
+                lagrange(&ks.ln_k, &g, ln_k)
+            }
+        };
+        let monotone = ks.tables.iter().all(|t| t.monotone(y));
+        // plain: vouched up to x_hi
+        let plain = (curve != Curve::OnsetStrip)
+            .then(|| {
+                let v = usize::from(curve != Curve::Stick);
+                let mut hi = check.map_or(f64::INFINITY, |c| c[v]);
+                for t in &ks.tables {
+                    hi = hi.min(t.plain_limit(curve, y)?);
+                }
+                Some(hi)
+            })
+            .flatten();
+        let g_plain = |x: f64| -> Option<f64> {
+            let g: Vec<f64> = ks
+                .tables
+                .iter()
+                .map(|t| t.g_plain(curve, y, x))
+                .collect::<Option<_>>()?;
+            Some(combine(g))
+        };
+        if let Some(hi) = plain {
+            if x <= hi {
+                return g_plain(x).map_or(Eval::Unknown, Eval::Value);
+            }
+        }
+        // sheared: vouched down to u_lo
+        if let Some(end) = end {
+            let u = (end - x).max(f64::MIN_POSITIVE).ln();
+            let c = match curve {
+                Curve::Stick => 2,
+                Curve::OnsetBody => 3,
+                Curve::OnsetStrip => 4,
+            };
+            let (mut lo, mut hi) = (check.map_or(f64::NEG_INFINITY, |k| k[c]), f64::INFINITY);
+            let mut vouched = true;
+            for t in &ks.tables {
+                match t.vouched(curve, y) {
+                    Some((l, h)) => {
+                        lo = lo.max(l);
+                        hi = hi.min(h);
+                    }
+                    None => vouched = false,
+                }
+            }
+            if vouched && lo <= hi {
+                let at = |u: f64| -> Option<f64> {
+                    let g: Vec<f64> = ks
+                        .tables
+                        .iter()
+                        .map(|t| t.g_at(curve, y, u))
+                        .collect::<Option<_>>()?;
+                    Some(combine(g))
+                };
+                // far from the end the body's ratios have converged (the JKR limit): its first
+                // node answers beyond it; a strip has no such side
+                let u = match curve {
+                    Curve::OnsetStrip if u > hi => return Eval::Unknown,
+                    _ => u.min(hi),
+                };
+                if u >= lo {
+                    return at(u).map_or(Eval::Unknown, Eval::Value);
+                }
+                if monotone && lo.is_finite() {
+                    if let Some(g) = at(lo) {
+                        return Eval::AtLeast(g);
+                    }
+                }
+            }
+        }
+        // beyond the plain limit without the end: at least the value there
+        match plain {
+            Some(hi) if monotone && x > hi && hi.is_finite() => {
+                g_plain(hi).map_or(Eval::Unknown, Eval::AtLeast)
+            }
+            _ => Eval::Unknown,
+        }
+    }
+
+    /// `g = ln(ratio - 1)` of `curve` at `y`, at `u` (the log of the distance to the curve's
+    /// end) and `k`, from the tables around k where each of them vouches for it, without the
+    /// checks between tables (which the build computes with it).
+    pub fn g_between_tables(&self, curve: Curve, y: f64, u: f64, k: f64) -> Option<f64> {
+        let ks = self.k_stencil(k)?;
+        let g: Vec<f64> = ks
+            .tables
+            .iter()
+            .map(|t| {
+                let (lo, hi) = t.vouched(curve, y)?;
+                (u >= lo && u <= hi).then_some(())?;
+                t.g_at(curve, y, u)
+            })
+            .collect::<Option<_>>()?;
+        Some(if g.len() == 1 {
+            g[0]
+        } else {
+            lagrange(&ks.ln_k, &g, k.ln())
+        })
+    }
+
+    /// [`MasterTables::g_between_tables`] in plain x: every table at the same x, where each
+    /// vouches for it.
+    pub fn g_plain_between_tables(&self, curve: Curve, y: f64, x: f64, k: f64) -> Option<f64> {
+        let ks = self.k_stencil(k)?;
+        let g: Vec<f64> = ks
+            .tables
+            .iter()
+            .map(|t| {
+                (x <= t.plain_limit(curve, y)?).then_some(())?;
+                t.g_plain(curve, y, x)
+            })
+            .collect::<Option<_>>()?;
+        Some(if g.len() == 1 {
+            g[0]
+        } else {
+            lagrange(&ks.ln_k, &g, k.ln())
+        })
+    }
+
+    /// Both ratios at x = log10 c_D, y = log10(c_D c_a), k, with the search limit `f_max`
+    /// (= v_max / V_stick,JKR): `Some((F, F_on))` with `None` for a ratio above `f_max`, or
+    /// `None` where the tables do not vouch for the answer.
+    pub(crate) fn answer(
+        &self,
+        x: f64,
+        y: f64,
+        k: f64,
+        f_max: f64,
+    ) -> Option<(Option<f64>, Option<f64>)> {
+        if !(x.is_finite() && y.is_finite() && f_max > 0.0) {
+            return None;
+        }
+        let ends = self.ends().and_then(|e| e.at(y, k));
+        let ks = self.k_stencil(k)?;
+        let ln_k = k.ln();
+        let beyond = |end: Option<f64>| {
+            // past its end a ratio exceeds F_TOP (rows checked for no bouncing beyond)
+            match end {
+                Some(end) if x >= end && ks.tables.iter().all(|t| t.monotone(y)) => {
+                    Some(if F_TOP > f_max * (1.0 + V_MAX_MARGIN) {
+                        Side::Above
+                    } else {
+                        Side::Unknown
+                    })
+                }
+                _ => None,
+            }
+        };
+        let x_s = ends.map(|e| e.x_s);
+        let stick = beyond(x_s)
+            .unwrap_or_else(|| side(self.eval(&ks, Curve::Stick, x, y, x_s, ln_k), f_max));
+        let onset = beyond(ends.map(|e| e.x_on)).unwrap_or_else(|| {
+            let on_strip = ends
+                .filter(|e| x > e.x_s - 0.5 * (e.x_on - e.x_s))
+                .map(|e| self.eval(&ks, Curve::OnsetStrip, x, y, Some(e.x_on), ln_k))
+                .filter(|e| *e != Eval::Unknown);
+            let e = on_strip.unwrap_or_else(|| self.eval(&ks, Curve::OnsetBody, x, y, x_s, ln_k));
+            side(e, f_max)
+        });
+        match (stick, onset) {
+            (Side::Below(s), Side::Below(o)) => Some((Some(s), Some(o.min(s)))),
+            (Side::Above, Side::Below(o)) => Some((None, Some(o))),
+            (Side::Above, Side::Above) => Some((None, None)),
+            _ => None,
+        }
+    }
+}
+
+/// The relative accuracy the tables promise against the exact search (V_stick and
+/// V_double_onset): a search asked for a tighter `rel_tol` than this (other than the default
+/// [`crate::DEFAULT_REL_TOL`]) is not answered from the tables.
+pub const TABLE_REL_TOL: f64 = 1e-5;
+
+/// The thresholds of `contact` at `t_vis` (s, > 0) from the master tables for `law`'s k, or
+/// `None` where they do not vouch for them (the caller then searches). Where a threshold lies
+/// beyond the search limit `opts.v_max`, the answer is "none below v_max", as the search would
+/// say.
 pub(crate) fn from_table(
-    contact: &Contact,
-    law: &CrackLaw,
+    contact: &contact::Contact,
+    law: &greenwood::CrackLaw,
     t_vis: f64,
-    opts: &SearchOptions,
-) -> Option<StickingThresholds> {
-    let table = MasterTable::standard(law.k())?;
+    opts: &crate::SearchOptions,
+) -> Option<crate::StickingThresholds> {
+    if opts.rel_tol < TABLE_REL_TOL && opts.rel_tol != crate::DEFAULT_REL_TOL {
+        return None;
+    }
     let d = contact.dimensionless(t_vis);
-    let r = table.ratios(d.c_d, d.c_a)?;
     let v_jkr = contact.v_stick_jkr();
     let v_max = opts.v_max_for(v_jkr);
-    let (stick, onset) = (r.v_stick * v_jkr, r.v_double_onset * v_jkr);
-    let beyond = |v: f64| v > v_max * (1.0 + V_MAX_MARGIN);
-    let within = |v: f64| v < v_max * (1.0 - V_MAX_MARGIN);
-    let (v_stick, v_double_onset) = match (within(stick), within(onset)) {
-        (true, true) => (Some(stick), Some(onset)),
-        (false, true) if beyond(stick) => (None, Some(onset)),
-        (false, false) if beyond(onset) => (None, None),
-        _ => return None,
-    };
-    Some(StickingThresholds {
+    let r = MasterTables::standard().ratios(d.c_d, d.c_a, law.k(), v_max / v_jkr)?;
+    Some(crate::StickingThresholds {
         t_vis,
-        v_stick,
-        v_double_onset,
+        v_stick: r.v_stick.map(|f| f * v_jkr),
+        v_double_onset: r.v_double_onset.map(|f| f * v_jkr),
         v_stick_jkr: v_jkr,
         v_max,
         collisions: 0,
         steps: 0,
-        method: ThresholdMethod::Table,
+        method: crate::ThresholdMethod::Table,
     })
 }

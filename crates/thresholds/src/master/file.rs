@@ -1,133 +1,115 @@
-//! The master table's text form: `#` header lines, then one record a line:
-//! ```text
-//! k,0.01
-//! row,<y>,<x_hi>,<cliff>          a row of constant y = log10(c_D c_a)
-//! node,<x>,<F>,<F_on>             a node of the row above: x = log10 c_D, F = V_stick/V_stick,JKR,
-//!                                 F_on = V_double_onset/V_stick,JKR
-//! cell,<x_hi>                     between the row above and the next: vouched up to x_hi
-//! ```
-//! Numbers in the workspace's one format (shortest round trip); `inf` for no cliff found.
+//! The master tables' text form, written in the workspace's one number format (shortest round
+//! trip): the committed files `crates/thresholds/data/master_k<k>.csv` and `master_ends.csv`.
+//! The layout and the reader are in [`super::format`].
 
-use super::{MasterTable, Row};
+use super::format::{EndsData, PieceData, TableData};
 use numerics::format::number;
+use std::fmt::Write as _;
 
-/// Significant figures of the ratios written: 13, far below the nodes' own error (about 2e-7).
-const DIGITS: usize = 13;
+/// Significant figures of the ratios written: 12, far below the nodes' own error (about 1e-7).
+const DIGITS: usize = 12;
 
 /// `v` rounded to [`DIGITS`] significant figures.
 fn rounded(v: f64) -> f64 {
     format!("{:.*e}", DIGITS - 1, v).parse().unwrap_or(v)
 }
 
-/// A table file that cannot be read.
-#[derive(Debug, Clone, PartialEq, Eq, thiserror::Error)]
-#[error("master table, line {line}: {problem}")]
-pub struct TableFileError {
-    /// 1-based line number.
-    pub line: usize,
-    /// What is wrong.
-    pub problem: String,
+fn header(out: &mut String, lines: &[String]) {
+    for h in lines {
+        let _ = writeln!(out, "# {h}");
+    }
 }
 
-impl MasterTable {
-    /// The table as text (see the module documentation of `master::file`).
-    pub fn to_text(&self) -> String {
-        let mut out: String = self.header.iter().map(|h| format!("# {h}\n")).collect();
-        out.push_str(&format!("k,{}\n", number(self.k)));
-        for (j, r) in self.rows.iter().enumerate() {
-            out.push_str(&format!(
-                "row,{},{},{}\n",
-                number(r.y),
-                number(r.x_hi),
-                number(r.cliff)
-            ));
-            for i in 0..r.x.len() {
-                out.push_str(&format!(
-                    "node,{},{},{}\n",
-                    number(r.x[i]),
-                    number(rounded(1.0 + r.g_stick[i].exp())),
-                    number(rounded(1.0 + r.g_onset[i].exp()))
-                ));
-            }
-            if let Some(c) = self.cells.get(j) {
-                out.push_str(&format!("cell,{}\n", number(*c)));
-            }
+fn piece(out: &mut String, p: &PieceData, strip: bool) {
+    for i in 0..p.x.len() {
+        if strip {
+            let _ = writeln!(
+                out,
+                "snode,{},{}",
+                number(p.x[i]),
+                number(rounded(p.f_onset[i]))
+            );
+        } else {
+            let _ = writeln!(
+                out,
+                "node,{},{},{}",
+                number(p.x[i]),
+                number(rounded(p.f_stick[i])),
+                number(rounded(p.f_onset[i]))
+            );
         }
-        out
     }
+}
 
-    /// Reads a table from its text (`bytes`, UTF-8).
-    pub fn parse(bytes: &[u8]) -> Result<MasterTable, TableFileError> {
-        let text = std::str::from_utf8(bytes).map_err(|e| TableFileError {
-            line: 0,
-            problem: e.to_string(),
-        })?;
-        let mut table = MasterTable::new(f64::NAN, Vec::new(), Vec::new(), Vec::new());
-        for (i, line) in text.lines().enumerate() {
-            let bad = |problem: &str| TableFileError {
-                line: i + 1,
-                problem: problem.to_string(),
-            };
-            if let Some(h) = line.strip_prefix('#') {
-                table.header.push(h.trim_start().to_string());
-                continue;
-            }
-            let fields: Vec<&str> = line.split(',').collect();
-            let num = |j: usize| -> Result<f64, TableFileError> {
-                fields
-                    .get(j)
-                    .and_then(|f| f.trim().parse::<f64>().ok())
-                    .ok_or_else(|| bad(&format!("field {j} is not a number")))
-            };
-            let g = |f: f64| -> Result<f64, TableFileError> {
-                if f > 1.0 && f.is_finite() {
-                    Ok((f - 1.0).ln())
-                } else {
-                    Err(bad("a ratio must be > 1"))
-                }
-            };
-            match fields[0] {
-                "k" => table.k = num(1)?,
-                "row" => table.rows.push(Row {
-                    y: num(1)?,
-                    x: Vec::new(),
-                    g_stick: Vec::new(),
-                    g_onset: Vec::new(),
-                    x_hi: num(2)?,
-                    cliff: num(3)?,
-                }),
-                "node" => {
-                    let r = table
-                        .rows
-                        .last_mut()
-                        .ok_or_else(|| bad("a node before any row"))?;
-                    let x = num(1)?;
-                    if r.x.last().is_some_and(|&p| p >= x) {
-                        return Err(bad("nodes must increase in x"));
-                    }
-                    r.x.push(x);
-                    r.g_stick.push(g(num(2)?)?);
-                    r.g_onset.push(g(num(3)?)?);
-                }
-                "cell" => table.cells.push(num(1)?),
-                "" => {}
-                other => return Err(bad(&format!("unknown record '{other}'"))),
-            }
+/// The text of one k's table (see [`super::format`]).
+pub fn table_to_text(t: &TableData) -> String {
+    let mut out = String::new();
+    header(&mut out, &t.header);
+    let _ = writeln!(out, "k,{}", number(t.k));
+    for (j, r) in t.rows.iter().enumerate() {
+        let _ = writeln!(
+            out,
+            "row,{},{},{},{}",
+            number(r.y),
+            number(r.x_s),
+            number(r.x_on),
+            u8::from(r.monotone)
+        );
+        let _ = writeln!(
+            out,
+            "body,{},{}",
+            number(r.body.d_lo[0]),
+            number(r.body.d_lo[1])
+        );
+        piece(&mut out, &r.body, false);
+        if !r.strip.x.is_empty() {
+            let _ = writeln!(out, "strip,{}", number(r.strip.d_lo[1]));
+            piece(&mut out, &r.strip, true);
         }
-        let ordered = table.rows.windows(2).all(|w| w[0].y < w[1].y);
-        let sized = table.cells.len() + 1 == table.rows.len() || table.rows.is_empty();
-        let filled = table.rows.iter().all(|r| r.x.len() >= 2);
-        if !(table.k > 0.0 && table.k < 1.0 && ordered && sized && filled) {
-            return Err(TableFileError {
-                line: 0,
-                problem: "a table needs k in (0, 1), rows increasing in y with two nodes or more, and a cell between each two rows".into(),
-            });
+        if let Some(c) = t.cells.get(j) {
+            let v: Vec<String> = c.numbers().iter().map(|&x| number(x)).collect();
+            let _ = writeln!(out, "cell,{}", v.join(","));
         }
-        Ok(MasterTable::new(
-            table.k,
-            table.header,
-            table.rows,
-            table.cells,
-        ))
     }
+    out
+}
+
+/// The text of the end curves (see [`super::format`]).
+pub fn ends_to_text(e: &EndsData) -> String {
+    let mut out = String::new();
+    header(&mut out, &e.header);
+    let _ = writeln!(
+        out,
+        "grid,{},{},{},{},{},{}",
+        number(e.y0),
+        number(e.dy),
+        e.ny,
+        number(e.k0),
+        e.per_octave,
+        e.nk
+    );
+    for j in 0..e.nk {
+        let _ = writeln!(
+            out,
+            "k,{}",
+            number(e.k0 * 2f64.powf(j as f64 / e.per_octave as f64))
+        );
+        for i in 0..e.ny {
+            let at = j * e.ny + i;
+            let _ = writeln!(
+                out,
+                "{},{},{}",
+                number(e.x_s[at]),
+                number(e.x_on[at]),
+                u8::from(e.valid[at])
+            );
+        }
+    }
+    let (y0, dy, ny) = e.kcheck_y;
+    let _ = writeln!(out, "kgrid,{},{},{}", number(y0), number(dy), ny);
+    for c in &e.kcheck {
+        let v: Vec<String> = c.numbers().iter().map(|&x| number(x)).collect();
+        let _ = writeln!(out, "kcheck,{}", v.join(","));
+    }
+    out
 }

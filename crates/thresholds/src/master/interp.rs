@@ -43,6 +43,27 @@ pub(crate) fn local_cubic(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     lagrange(&xs[s..e], &ys[s..e], x)
 }
 
+/// The first of the four nodes of a uniform grid of `n` nodes (at 0, 1, ..., n - 1) around the
+/// fractional position `f`, and the cubic Lagrange weights of those four nodes at `f`; `None`
+/// when `f` lies outside the grid (beyond a rounding margin) or the grid has fewer than four
+/// nodes.
+pub(crate) fn uniform_weights(f: f64, n: usize) -> Option<(usize, [f64; 4])> {
+    /// A position this far outside the grid (in steps) is taken as its end: rounding.
+    const EDGE: f64 = 1e-9;
+    if n < 4 || !(f >= -EDGE && f <= (n - 1) as f64 + EDGE) {
+        return None;
+    }
+    let i0 = (f.floor() as i64 - 1).clamp(0, n as i64 - 4) as usize;
+    let t = f - i0 as f64;
+    let w = [
+        -(t - 1.0) * (t - 2.0) * (t - 3.0) / 6.0,
+        t * (t - 2.0) * (t - 3.0) / 2.0,
+        -t * (t - 1.0) * (t - 3.0) / 2.0,
+        t * (t - 1.0) * (t - 2.0) / 6.0,
+    ];
+    Some((i0, w))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -68,6 +89,21 @@ mod tests {
             ),
             (0, 2, 1)
         );
+    }
+
+    /// Uniform weights reproduce a cubic, give a node's value at the node, and refuse outside.
+    #[test]
+    fn uniform_weights_are_cubic_lagrange() {
+        let f = |x: f64| 1.0 - 2.0 * x + 0.3 * x * x * x;
+        for pos in [0.0, 0.5, 3.0, 4.25, 7.0] {
+            let (i0, w) = uniform_weights(pos, 8).unwrap();
+            let v: f64 = (0..4).map(|q| w[q] * f((i0 + q) as f64)).sum();
+            assert!((v - f(pos)).abs() < 1e-12, "{pos}");
+        }
+        let (i0, w) = uniform_weights(5.0, 8).unwrap();
+        assert_eq!((i0, w), (4, [0.0, 1.0, 0.0, 0.0]));
+        assert!(uniform_weights(-0.1, 8).is_none() && uniform_weights(7.1, 8).is_none());
+        assert!(uniform_weights(1.0, 3).is_none());
     }
 
     /// The interpolation error of a smooth function falls as h^4 (halving the spacing divides it

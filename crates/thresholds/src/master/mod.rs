@@ -1,5 +1,5 @@
-//! The master table: V_stick and V_double_onset for every material, size, geometry and T_vis
-//! from the model's two dimensionless numbers, in microseconds.
+//! The master tables: V_stick and V_double_onset for every material, size, geometry, T_vis and
+//! k from 0.005 to 0.05, in about a microsecond, up to the cliff beyond which nothing bounces.
 //!
 //! In the JKR units of `docs/model.md` (a/a_eq, delta/delta_eq, time t0) a collision is
 //! ```text
@@ -7,213 +7,200 @@
 //! c_D = 2 (T_vis/nu^2) E* a_eq t0/m*,   c_a = E* gamma t0/(sigma0^2 T_vis a_eq)
 //! ```
 //! (eps = 0.01 fixed; [`contact::Contact::dimensionless`]), and V_stick,JKR is a fixed multiple
-//! of the speed unit a_eq/t0. So `F = V_stick / V_stick,JKR` and `F_on = V_double_onset /
-//! V_stick,JKR` are functions of `(c_D, c_a; k)` alone, the same for every material, radius and
-//! geometry. The table holds them for k = 0.01 and 0.02 ([`MasterTable::standard`]) in the
-//! coordinates
+//! of the speed unit. So `F = V_stick / V_stick,JKR` and `F_on = V_double_onset / V_stick,JKR`
+//! are functions of `(c_D, c_a; k)` alone, the same for every material, radius and geometry, in
+//! the coordinates
 //! ```text
 //! x = log10 c_D           (at fixed material and size it moves only with T_vis)
 //! y = log10 (c_D c_a)     (independent of T_vis and of the density)
 //! ```
-//! as `ln(F - 1)` and `ln(F_on - 1)` (F > 1.00015 everywhere: the T_vis -> 0 limit of the
-//! model lies 1.5e-4 above the rounded 14.18 of V_stick,JKR), each row of constant y on its
-//! own nodes in x, computed by the exact search at `rel_tol` 1e-8 ([`build`]).
 //!
-//! - **Interpolation**: the local cubic through four nodes in x on each of the four rows around
-//!   y, then the cubic through those four values in y ([`MasterTable::ratios`]).
-//! - **Vouching**: every interval of a row and every cell between two rows was checked at its
-//!   midpoint against the exact search; the table answers only where those checks passed within
-//!   [`build::BuildConfig::tol`] (2e-6 of F), and says `None` elsewhere: beyond its domain, and
-//!   near the cliff (c_D of 0.2-1 depending on y) where F climbs steeply and then nothing
-//!   bounces. The caller then runs the exact search.
-//! - **The JKR corner**: where c_a > 1e8 (T_vis below about 1e-14 s for 60 um CO2, grains of a
-//!   centimetre at 1e-16 s) the exact search needs millions of steps or fails, while F has
-//!   converged in c_a to a few 1e-7: the nodes there are computed at c_a = 1e8
-//!   ([`build::BuildConfig::z_clamp`]; F moves by 2-4e-7 from c_a = 1e8 to 1e10).
+//! - **The cliff.** Far above V_stick the rebound speed saturates (e falls as 1/V_in); where
+//!   that saturated rebound vanishes, at x_c(y), V_stick diverges (about as a power of
+//!   ln(1/(x_c - x))) and beyond it nothing bounces; double collisions go on a little further,
+//!   so F_on diverges at a second curve. The tables end each ratio where it reaches
+//!   [`F_TOP`] = 1e4: x_s(y, k) for F, x_on(y, k) for F_on, each a root in x of one collision at
+//!   F_TOP V_stick,JKR found to 1e-10 and tabulated on a fine grid ([`ends`]).
+//! - **Coordinates that keep the local cubic honest.** Each row of constant y holds F and F_on
+//!   against u = ln(x_s - x), the log of the distance to the end (in which F is smooth all the
+//!   way to the cliff), and F_on between x_s and x_on against w = ln(x_on - x) (the *strip*),
+//!   all as `ln(ratio - 1)` (F > 1.00015 everywhere: the T_vis -> 0 limit lies 1.5e-4 above
+//!   the rounded 14.18 of V_stick,JKR). A query interpolates at its own distance to the end
+//!   (the end curves at its (y, k)): the local cubic in u on the four rows around y, the cubic
+//!   in y, then the cubic in ln k through the four tables around k (11 tables, k = 0.005
+//!   2^(i/3)).
+//! - **Vouching.** Every node is an exact search ([`build`]); every interval of a row, every
+//!   cell between rows and every interval between tables of neighbouring k was checked at its
+//!   midpoint, and the default search agrees with each node; the tables answer only where those
+//!   checks passed, and say nothing elsewhere (a thin band at the ends, where the search itself
+//!   is uncertain, and next to a change of regime of the cliff). Beyond an end a ratio exceeds
+//!   F_TOP, so below that search limit "nothing bounces" is an answer too.
+//! - **The JKR corner.** Where c_a > 1e8 (T_vis below about 1e-14 s for 60 um CO2, grains of a
+//!   centimetre at 1e-16 s) the exact search needs millions of steps or is refused, while F has
+//!   converged in c_a to a few 1e-7: the nodes there are computed at c_a = 1e8 and the tables
+//!   answer with that converged value; below x = -17 (T_vis -> 0) with the value at -17.
 //!
 //! # Example
 //! ```
-//! use thresholds::{Contact, Geometry, MasterTable, Material};
-//! let table = MasterTable::standard(0.01).expect("k = 0.01 is tabulated");
+//! use thresholds::{Contact, Geometry, MasterTables, Material};
+//! let tables = MasterTables::standard();
 //! let c = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
 //! let d = c.dimensionless(1e-9);
-//! let r = table.ratios(d.c_d, d.c_a).expect("inside the vouched domain");
-//! let v_stick = r.v_stick * c.v_stick_jkr(); // m/s
+//! let r = tables.ratios(d.c_d, d.c_a, 0.01, 1000.0).expect("the tables vouch here");
+//! let v_stick = r.v_stick.expect("bounces below 1000 V_stick,JKR") * c.v_stick_jkr(); // m/s
 //! assert!((v_stick / 0.041376 - 1.0).abs() < 1e-4); // Section 4.4: 4.14 cm/s
 //! # Ok::<(), thresholds::ContactError>(())
 //! ```
 
 mod answer;
 pub mod build;
+pub mod ends;
 mod file;
-mod interp;
+pub mod format;
+pub(crate) mod interp;
+mod table;
 
-use interp::{interval, lagrange, local_cubic, stencil_start};
+use format::{EndsData, Table};
 use std::sync::OnceLock;
 
 pub(crate) use answer::from_table;
-pub use file::TableFileError;
+pub use answer::{TABLE_REL_TOL, V_MAX_MARGIN};
+pub use ends::{EndCurves, Ends};
+pub use file::{ends_to_text, table_to_text};
+pub use format::{FormatError, F_TOP};
+pub use table::Curve;
 
-/// The k values with a committed table.
-pub const STANDARD_K: [f64; 2] = [0.01, 0.02];
+/// The tables' binary form, made by the build script from the committed text files
+/// (`crates/thresholds/data/master_*.csv`).
+static BYTES: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/master.bin"));
 
-/// The committed tables (`crates/thresholds/data/`, written by `cargo xtask master-table`).
-const STANDARD_FILES: [&[u8]; 2] = [
-    include_bytes!("../../data/master_k0.01.csv"),
-    include_bytes!("../../data/master_k0.02.csv"),
-];
-
-/// V_stick / V_stick,JKR and V_double_onset / V_stick,JKR at one point of the table.
+/// The ratios to V_stick,JKR at one point: `None` for a ratio above the search limit (nothing
+/// bounces, or double-collides, below it).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Ratios {
     /// V_stick / V_stick,JKR (dimensionless).
-    pub v_stick: f64,
+    pub v_stick: Option<f64>,
     /// V_double_onset / V_stick,JKR (dimensionless), at most `v_stick`.
-    pub v_double_onset: f64,
+    pub v_double_onset: Option<f64>,
 }
 
-/// One row of the table: constant y, its own nodes in x.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) struct Row {
-    /// log10 (c_D c_a).
-    pub(crate) y: f64,
-    /// log10 c_D of the nodes, increasing.
-    pub(crate) x: Vec<f64>,
-    /// ln(F - 1) at the nodes.
-    pub(crate) g_stick: Vec<f64>,
-    /// ln(F_on - 1) at the nodes.
-    pub(crate) g_onset: Vec<f64>,
-    /// The row's interpolation is vouched for from `x[0]` up to here.
-    pub(crate) x_hi: f64,
-    /// The smallest x found without bouncing up to 1000 V_stick,JKR (the cliff); infinite when
-    /// bouncing was found up to the end of the row.
-    pub(crate) cliff: f64,
+/// The master tables of every k and their end curves (see the module documentation), read
+/// from the embedded binary form: its index at once, each table and the end curves on first
+/// use (tens of microseconds each).
+#[derive(Debug)]
+pub struct MasterTables {
+    bytes: &'static [u8],
+    /// k of each table, increasing.
+    k: Vec<f64>,
+    tables: Vec<OnceLock<Option<Table>>>,
+    ends: OnceLock<Option<EndCurves>>,
 }
 
-impl Row {
-    fn at(&self, x: f64) -> (f64, f64) {
-        (
-            local_cubic(&self.x, &self.g_stick, x),
-            local_cubic(&self.x, &self.g_onset, x),
-        )
+impl MasterTables {
+    /// The committed tables (empty, so that every threshold is searched, if the library was
+    /// built without them).
+    pub fn standard() -> &'static MasterTables {
+        static STANDARD: OnceLock<MasterTables> = OnceLock::new();
+        STANDARD.get_or_init(|| MasterTables::from_bytes(BYTES))
     }
-}
 
-/// The master table of one k (see the module documentation).
-#[derive(Debug, Clone, PartialEq)]
-pub struct MasterTable {
-    k: f64,
-    header: Vec<String>,
-    rows: Vec<Row>,
-    /// The y of each row (kept apart for the interval search of every query).
-    ys: Vec<f64>,
-    /// For the cell between rows `j` and `j + 1`: its y-interpolation is vouched for up to this x.
-    cells: Vec<f64>,
-}
-
-impl MasterTable {
-    /// A table of `k` from its rows and cells.
-    pub(crate) fn new(k: f64, header: Vec<String>, rows: Vec<Row>, cells: Vec<f64>) -> Self {
-        let ys = rows.iter().map(|r| r.y).collect();
-        Self {
-            k,
-            header,
-            rows,
-            ys,
-            cells,
+    /// Tables from their binary form ([`format::to_bytes`]); empty where it cannot be read.
+    pub fn from_bytes(bytes: &'static [u8]) -> MasterTables {
+        let index = format::index(bytes).unwrap_or_default();
+        MasterTables {
+            bytes,
+            k: index.iter().map(|e| e.0).collect(),
+            tables: index.iter().map(|_| OnceLock::new()).collect(),
+            ends: OnceLock::new(),
         }
     }
 
-    /// The committed table of `k` (0.01 or 0.02, [`STANDARD_K`]); `None` for any other k.
-    /// Parsed once, on first use.
-    pub fn standard(k: f64) -> Option<&'static MasterTable> {
-        static TABLES: [OnceLock<Option<MasterTable>>; 2] = [OnceLock::new(), OnceLock::new()];
-        let i = STANDARD_K.iter().position(|&s| s == k)?;
-        TABLES[i]
-            .get_or_init(|| MasterTable::parse(STANDARD_FILES[i]).ok())
-            .as_ref()
+    /// Tables already in memory (the build's, before they are written), with their end curves.
+    pub fn from_parts(tables: Vec<Table>, ends: EndCurves) -> MasterTables {
+        fn filled<T>(v: T) -> OnceLock<Option<T>> {
+            let c = OnceLock::new();
+            let _ = c.set(Some(v));
+            c
+        }
+        MasterTables {
+            bytes: &[],
+            k: tables.iter().map(|t| t.k).collect(),
+            tables: tables.into_iter().map(filled).collect(),
+            ends: filled(ends),
+        }
     }
 
-    /// The modulus ratio k of this table.
-    pub fn k(&self) -> f64 {
-        self.k
+    /// The k of the tables, increasing.
+    pub fn table_k(&self) -> &[f64] {
+        &self.k
     }
 
-    /// The `#` header lines of the table's file: the command that made it, its commit, the
-    /// tolerances and the domain.
-    pub fn header(&self) -> &[String] {
-        &self.header
-    }
-
-    /// Puts `lines` before the header lines (the command and commit that built the table).
-    pub fn prepend_header(&mut self, lines: &[String]) {
-        self.header.splice(0..0, lines.iter().cloned());
-    }
-
-    /// The range of y = log10(c_D c_a) the table's rows span.
-    pub fn y_range(&self) -> (f64, f64) {
-        match (self.rows.first(), self.rows.last()) {
-            (Some(a), Some(b)) => (a.y, b.y),
+    /// The range of k answered: from the first table's k to the last's (empty: NaN).
+    pub fn k_range(&self) -> (f64, f64) {
+        match (self.k.first(), self.k.last()) {
+            (Some(&a), Some(&b)) => (a, b),
             _ => (f64::NAN, f64::NAN),
         }
     }
 
-    /// `(y, cliff)` of each row: the smallest x = log10 c_D found without bouncing up to
-    /// 1000 V_stick,JKR (infinite where bouncing was found up to the end of the row).
-    pub fn cliff(&self) -> Vec<(f64, f64)> {
-        self.rows.iter().map(|r| (r.y, r.cliff)).collect()
+    /// Table `i` (in increasing k).
+    pub fn table(&self, i: usize) -> Option<&Table> {
+        self.tables
+            .get(i)?
+            .get_or_init(|| format::table_from_bytes(self.bytes, i))
+            .as_ref()
     }
 
-    /// `F = V_stick / V_stick,JKR` and `F_on = V_double_onset / V_stick,JKR` for the drag number
-    /// `c_d` and the crack-speed number `c_a` ([`contact::Contact::dimensionless`]); `None` where
-    /// the table does not vouch for its accuracy (outside its domain, near the cliff).
-    pub fn ratios(&self, c_d: f64, c_a: f64) -> Option<Ratios> {
+    /// The end curves.
+    pub fn ends(&self) -> Option<&EndCurves> {
+        self.ends
+            .get_or_init(|| format::ends_from_bytes(self.bytes).map(EndCurves::new))
+            .as_ref()
+    }
+
+    /// Whether the k checks cover every interval between the tables, so that every k of
+    /// [`MasterTables::k_range`] is answered (else only the tables' own k).
+    pub fn k_checked(&self) -> bool {
+        let Some(e) = self.ends() else { return false };
+        let e: &EndsData = e.data();
+        self.k.len() >= 4 && e.kcheck_y.2 > 0 && e.kcheck.len() == (self.k.len() - 1) * e.kcheck_y.2
+    }
+
+    /// The limits of the cubic in ln k between tables `i` and `i + 1` at `y`, as a table's cell
+    /// ([`format::CellData::limits`]); `None` where it was not checked.
+    fn k_check(&self, i: usize, y: f64) -> Option<[f64; 5]> {
+        let e: &EndsData = self.ends()?.data();
+        let (y0, dy, ny) = e.kcheck_y;
+        // checks made for another set of tables vouch for nothing
+        if e.kcheck.len() != self.k.len().saturating_sub(1) * ny {
+            return None;
+        }
+        let b = ((y - y0) / dy).floor();
+        if !(b >= 0.0 && b < ny as f64) {
+            return None;
+        }
+        Some(e.kcheck.get(i * ny + b as usize)?.limits())
+    }
+
+    /// F and F_on at the drag number `c_d` and the crack-speed number `c_a`
+    /// ([`contact::Contact::dimensionless`]) for the modulus ratio `k`, with the search limit
+    /// `f_max` = v_max / V_stick,JKR: a ratio above it is `None` (nothing below v_max). `None`
+    /// altogether where the tables do not vouch for the answer (k outside 0.005-0.05, the thin
+    /// bands at the ends, within [`V_MAX_MARGIN`] of the limit).
+    pub fn ratios(&self, c_d: f64, c_a: f64, k: f64, f_max: f64) -> Option<Ratios> {
         if !(c_d > 0.0 && c_a > 0.0 && c_d.is_finite() && c_a.is_finite()) {
             return None;
         }
         let x = c_d.log10();
-        self.ratios_at(x, x + c_a.log10())
+        self.ratios_at(x, x + c_a.log10(), k, f_max)
     }
 
-    /// [`MasterTable::ratios`] at `x = log10 c_D`, `y = log10 (c_D c_a)`.
-    pub fn ratios_at(&self, x: f64, y: f64) -> Option<Ratios> {
-        let (g_stick, g_onset) = self.g_at(x, y)?;
-        let v_stick = 1.0 + g_stick.exp();
-        let v_double_onset = (1.0 + g_onset.exp()).min(v_stick);
+    /// [`MasterTables::ratios`] at `x = log10 c_D`, `y = log10 (c_D c_a)`.
+    pub fn ratios_at(&self, x: f64, y: f64, k: f64, f_max: f64) -> Option<Ratios> {
+        let (s, o) = self.answer(x, y, k, f_max)?;
         Some(Ratios {
-            v_stick,
-            v_double_onset,
+            v_stick: s,
+            v_double_onset: o,
         })
-    }
-
-    /// `(ln(F - 1), ln(F_on - 1))` interpolated at `(x, y)`, where vouched.
-    fn g_at(&self, x: f64, y: f64) -> Option<(f64, f64)> {
-        let n = self.rows.len();
-        if n < 4 {
-            return None;
-        }
-        let ys = &self.ys;
-        // only cells with a full stencil of rows, and not the two end cells
-        if !(y >= ys[1] && y <= ys[n - 2]) {
-            return None;
-        }
-        let j = interval(ys, y);
-        let s = stencil_start(j, n);
-        let stencil = &self.rows[s..s + 4];
-        let x_lo = stencil
-            .iter()
-            .map(|r| r.x[0])
-            .fold(f64::NEG_INFINITY, f64::max);
-        let x_hi = stencil.iter().map(|r| r.x_hi).fold(self.cells[j], f64::min);
-        if !(x >= x_lo && x <= x_hi) {
-            return None;
-        }
-        let mut gs = [0.0; 4];
-        let mut go = [0.0; 4];
-        for (i, r) in stencil.iter().enumerate() {
-            (gs[i], go[i]) = r.at(x);
-        }
-        let sy = &ys[s..s + 4];
-        Some((lagrange(sy, &gs, y), lagrange(sy, &go, y)))
     }
 }

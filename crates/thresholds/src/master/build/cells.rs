@@ -1,0 +1,289 @@
+//! One k's table: rows every [`BuildConfig::y_step`] in y, each cell between two rows checked at
+//! mid-y, at the distance to the end interpolated there, and a row added in its middle where the
+//! check fails, down to [`BuildConfig::min_y_step`].
+
+use super::row::build_row;
+use super::{grid_k, rel_diff, BuildConfig, Cache};
+use crate::master::ends::EndCurves;
+use crate::master::format::{CellData, EndsData, PieceData, RowData, TableData, F_TOP};
+use crate::master::interp::{lagrange, local_cubic, stencil_start};
+use crate::ThresholdsError;
+use greenwood::CrackLaw;
+use numerics::format::number;
+use rayon::prelude::*;
+
+/// The end curves' grid point of `y` at table `k_index` (an exact point of the grid: rows lie on
+/// it), if computed.
+fn row_ends(cfg: &BuildConfig, ends: &EndsData, k_index: usize, y: f64) -> Option<(f64, f64)> {
+    let j = k_index * (cfg.ends_k.1 / cfg.table_k.1);
+    let i = ((y - ends.y0) / ends.dy).round();
+    if !(i >= 0.0 && (i as usize) < ends.ny && j < ends.nk) {
+        return None;
+    }
+    let at = j * ends.ny + i as usize;
+    let (s, o) = (ends.x_s[at], ends.x_on[at]);
+    (s.is_finite() && o.is_finite()).then_some((s, o))
+}
+
+/// A piece's nodes as `(u, g = ln(ratio - 1))` for ratio `v`, u increasing.
+fn curve(p: &PieceData, end: f64, v: usize) -> (Vec<f64>, Vec<f64>) {
+    let u = p.x.iter().rev().map(|x| (end - x).ln()).collect();
+    let r = if v == 0 { &p.f_stick } else { &p.f_onset };
+    let g = r.iter().rev().map(|f| (f - 1.0).ln()).collect();
+    (u, g)
+}
+
+/// Sheared checks reach this far from the end (in x): beyond, the cells are interpolated in
+/// plain x ([`crate::master::table`]).
+pub const SHEARED_REACH: f64 = 2.0;
+
+/// The last check point that passed before the first that failed, in the order given: `all`
+/// when every one passed, `none` when the first failed.
+fn last_passing(checks: &[(f64, bool)], all: f64, none: f64) -> f64 {
+    match checks.iter().position(|q| !q.1) {
+        None => all,
+        Some(0) => none,
+        Some(i) => checks[i - 1].0,
+    }
+}
+
+/// The limits of the cell between `rows[j]` and `rows[j + 1]` (checked at mid-y: in plain x at
+/// the nodes of both rows, and at a fixed distance to the end interpolated there), and whether
+/// every check inside the rows' vouched ranges passed (else a row is added in the middle).
+fn check_cell(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    cache: &Cache,
+    curves: &EndCurves,
+    rows: &[RowData],
+    j: usize,
+) -> (CellData, bool) {
+    let n = rows.len();
+    let s = stencil_start(j, n);
+    let stencil = &rows[s..(s + 4).min(n)];
+    if stencil.len() < 4 {
+        return (CellData::NONE, false);
+    }
+    let ys: Vec<f64> = stencil.iter().map(|r| r.y).collect();
+    let y_mid = 0.5 * (rows[j].y + rows[j + 1].y);
+    let mut cell = CellData::NONE;
+    let mut ok = true;
+    let exact = |x: f64, y: f64, v: usize| {
+        let p = cache.node(cfg, law, x, y);
+        if v == 0 {
+            p.stick()
+        } else {
+            p.onset()
+        }
+    };
+    // plain x
+    let x_s_min = stencil.iter().map(|r| r.x_s).fold(f64::INFINITY, f64::min);
+    for v in 0..2 {
+        if stencil.iter().any(|r| r.body.x.len() < 2) {
+            continue;
+        }
+        let of_rows: Vec<(Vec<f64>, Vec<f64>, f64)> = stencil
+            .iter()
+            .map(|r| {
+                let (u, g) = curve(&r.body, r.x_s, v);
+                (u, g, r.x_s)
+            })
+            .collect();
+        let hi = stencil
+            .iter()
+            .map(|r| r.x_s - r.body.d_lo[v])
+            .fold(f64::INFINITY, f64::min);
+        // the nodes of the lower row (the upper row's are its next cell's)
+        let mut xs: Vec<f64> = rows[j]
+            .body
+            .x
+            .iter()
+            .copied()
+            .filter(|&x| x <= hi)
+            .collect();
+        xs.sort_by(f64::total_cmp);
+        xs.dedup();
+        let checks: Vec<(f64, bool)> = xs
+            .par_iter()
+            .map(|&x| {
+                let g: Vec<f64> = of_rows
+                    .iter()
+                    .map(|(u, g, x_s)| local_cubic(u, g, (x_s - x).ln().min(u[u.len() - 1])))
+                    .collect();
+                let predicted = 1.0 + lagrange(&ys, &g, y_mid).exp();
+                (x, rel_diff(Some(predicted), exact(x, y_mid, v)) <= cfg.tol)
+            })
+            .collect();
+        cell.x_hi[v] = last_passing(&checks, hi, f64::NEG_INFINITY);
+        // far from the end (where the sheared checks do not reach) plain x must hold
+        ok &= checks
+            .iter()
+            .all(|q| q.1 || q.0 > x_s_min - SHEARED_REACH / 2.0);
+    }
+    // at a fixed distance to the end, where the end curves vouch for the end at mid-y
+    let Some(e) = curves.at(y_mid, law.k()) else {
+        return (cell, ok);
+    };
+    for (c, strip, v) in [(0, false, 0), (1, false, 1), (2, true, 1)] {
+        fn piece_of(r: &RowData, strip: bool) -> &PieceData {
+            if strip {
+                &r.strip
+            } else {
+                &r.body
+            }
+        }
+        let piece = |r| piece_of(r, strip);
+        let end = |r: &RowData| if strip { r.x_on } else { r.x_s };
+        let end_mid = if strip { e.x_on } else { e.x_s };
+        if stencil.iter().any(|r| piece(r).x.len() < 2) {
+            continue;
+        }
+        let of_rows: Vec<(Vec<f64>, Vec<f64>)> =
+            stencil.iter().map(|r| curve(piece(r), end(r), v)).collect();
+        let lo = stencil
+            .iter()
+            .map(|r| piece(r).d_lo[v].ln())
+            .fold(f64::NEG_INFINITY, f64::max);
+        let hi = of_rows
+            .iter()
+            .map(|(u, _)| u[u.len() - 1])
+            .fold(SHEARED_REACH.ln(), f64::min);
+        let mut us: Vec<f64> = curve(piece(&rows[j]), end(&rows[j]), v)
+            .0
+            .into_iter()
+            .filter(|&u| u >= lo && u <= hi)
+            .collect();
+        us.sort_by(|a, b| b.total_cmp(a));
+        us.dedup();
+        let checks: Vec<(f64, bool)> = us
+            .par_iter()
+            .map(|&u| {
+                let g: Vec<f64> = of_rows
+                    .iter()
+                    .map(|(cu, cg)| local_cubic(cu, cg, u))
+                    .collect();
+                let predicted = 1.0 + lagrange(&ys, &g, y_mid).exp();
+                (
+                    u,
+                    rel_diff(Some(predicted), exact(end_mid - u.exp(), y_mid, v)) <= cfg.tol,
+                )
+            })
+            .collect();
+        let all = if lo.is_finite() { lo } else { f64::INFINITY };
+        cell.d_lo[c] = last_passing(&checks, all, f64::INFINITY).exp();
+        ok &= checks.iter().all(|q| q.1);
+    }
+    (cell, ok)
+}
+
+/// The table of `k_index` (k = `grid_k` of the tables' grid) on the end curves `ends`;
+/// `progress` is told what is done.
+pub fn build_table(
+    cfg: &BuildConfig,
+    k_index: usize,
+    ends: &EndsData,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<TableData, ThresholdsError> {
+    let (k0, per, _) = cfg.table_k;
+    let k = grid_k(k0, per, k_index);
+    let law = CrackLaw::new(k)?;
+    let curves = EndCurves::new(ends.clone());
+    let cache = Cache::default();
+    let row_at = |y: f64| -> Option<RowData> {
+        let (x_s, x_on) = row_ends(cfg, ends, k_index, y)?;
+        let r = build_row(cfg, &law, &cache, y, x_s, x_on);
+        progress(&format!(
+            "k = {k}, row y = {y}: {} + {} nodes, vouched to d = {} / {} / {}{}",
+            r.body.x.len(),
+            r.strip.x.len(),
+            number(r.body.d_lo[0]),
+            number(r.body.d_lo[1]),
+            number(r.strip.d_lo[1]),
+            if r.monotone { "" } else { ", not monotone" }
+        ));
+        Some(r)
+    };
+    let (y0, y1) = cfg.y_range;
+    let n0 = ((y1 - y0) / cfg.y_step).round() as usize + 1;
+    let ys: Vec<f64> = (0..n0).map(|i| y0 + i as f64 * cfg.y_step).collect();
+    let mut rows: Vec<RowData> = ys.par_iter().filter_map(|&y| row_at(y)).collect();
+    let mut cells: Vec<Option<CellData>> = vec![None; rows.len().saturating_sub(1)];
+    loop {
+        let unchecked: Vec<usize> = (1..rows.len().saturating_sub(2))
+            .filter(|&j| cells[j].is_none())
+            .collect();
+        if unchecked.is_empty() {
+            break;
+        }
+        let mut split = Vec::new();
+        for &j in &unchecked {
+            let (cell, ok) = check_cell(cfg, &law, &cache, &curves, &rows, j);
+            let can_split = rows[j + 1].y - rows[j].y > cfg.min_y_step * 1.5;
+            if ok || !can_split {
+                cells[j] = Some(cell);
+            } else {
+                split.push(j);
+            }
+            progress(&format!(
+                "k = {k}, cell y = {} .. {}: plain to x = {} / {}, sheared to d = {} / {} / {}{}",
+                rows[j].y,
+                rows[j + 1].y,
+                number(cell.x_hi[0]),
+                number(cell.x_hi[1]),
+                number(cell.d_lo[0]),
+                number(cell.d_lo[1]),
+                number(cell.d_lo[2]),
+                if ok || !can_split { "" } else { ", split" }
+            ));
+        }
+        let new_rows: Vec<RowData> = split
+            .par_iter()
+            .filter_map(|&j| row_at(0.5 * (rows[j].y + rows[j + 1].y)))
+            .collect();
+        if new_rows.is_empty() && !split.is_empty() {
+            for j in split {
+                cells[j] = Some(CellData::NONE);
+            }
+        }
+        for r in new_rows {
+            let at = rows.partition_point(|q| q.y < r.y);
+            rows.insert(at, r);
+            cells.insert(at, None);
+            // the stencils around the new row changed
+            for j in at.saturating_sub(2)..(at + 2).min(cells.len()) {
+                cells[j] = None;
+            }
+        }
+    }
+    let header = vec![
+        format!(
+            "master table of F = V_stick/V_stick,JKR and F_on = V_double_onset/V_stick,JKR over x = log10 c_D, y = log10(c_D c_a), k = {k}"
+        ),
+        format!(
+            "nodes: the exact search at rel_tol = {}, collisions at rtol = {}, c_a clamped at 1e{}; F up to {F_TOP} (x_s, x_on: the end curves)",
+            number(cfg.rel_tol),
+            number(cfg.solver.rtol),
+            cfg.z_clamp
+        ),
+        format!(
+            "interpolation: local cubics of ln(ratio - 1) in u = ln(x_s - x) (body) and w = ln(x_on - x) (strip), then in y in plain x (cell x_hi) or at a fixed distance to the end (cell d_lo); every midpoint checked to {}; the default search agrees with every vouched node to {}",
+            number(cfg.tol),
+            number(cfg.agree)
+        ),
+        format!(
+            "domain: x from {}, y in [{}, {}]; d_lo: vouched where the distance to the end is at least this",
+            number(cfg.x_min),
+            number(y0),
+            number(y1)
+        ),
+    ];
+    Ok(TableData {
+        k,
+        header,
+        cells: cells
+            .into_iter()
+            .map(|c| c.unwrap_or(CellData::NONE))
+            .collect(),
+        rows,
+    })
+}

@@ -1,0 +1,142 @@
+//! The checks between tables of neighbouring k: in each k interval, at its middle k (a point of
+//! the end curves' grid), in each bin of y, the cubic in ln k through the four tables around it
+//! is compared with the exact search along the nodes of the nearest row, from far from the end
+//! towards it; the interval is vouched for in that bin down to the last distance that passed.
+
+use super::cells::SHEARED_REACH;
+use super::{rel_diff, BuildConfig, Cache};
+use crate::master::ends::EndCurves;
+use crate::master::format::{CellData, EndsData, Table, TableData};
+use crate::master::{Curve, MasterTables};
+use crate::ThresholdsError;
+use greenwood::CrackLaw;
+use numerics::format::number;
+use rayon::prelude::*;
+
+/// Every this-many-th node of the nearest row is a check point (they lie a few hundredths to a
+/// few tenths apart in u; the k interpolation error varies slowly along them).
+const CHECK_EVERY: usize = 2;
+
+/// `ends` with the k checks of `tables` filled in; `progress` is told of each interval.
+pub fn k_checks(
+    cfg: &BuildConfig,
+    tables: &[TableData],
+    ends: &EndsData,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<EndsData, ThresholdsError> {
+    let (y0, dy, ny) = ends.kcheck_y;
+    let mut open = ends.clone();
+    // no restriction while checking
+    let everywhere = CellData {
+        x_hi: [f64::INFINITY; 2],
+        d_lo: [0.0; 3],
+    };
+    open.kcheck = vec![everywhere; tables.len().saturating_sub(1) * ny];
+    let curves = EndCurves::new(open.clone());
+    let all = MasterTables::from_parts(
+        tables.iter().map(Table::from_data).collect(),
+        EndCurves::new(open.clone()),
+    );
+    let mut out = open;
+    for i in 0..tables.len().saturating_sub(1) {
+        // the middle in ln k (on the standard grid, a point of the end curves' grid)
+        let k_mid = (tables[i].k * tables[i + 1].k).sqrt();
+        let law = CrackLaw::new(k_mid)?;
+        let cache = Cache::default();
+        let bins: Vec<CellData> = (0..ny)
+            .into_par_iter()
+            .map(|b| {
+                let y = y0 + (b as f64 + 0.5) * dy;
+                check_bin(cfg, &law, &cache, &all, &curves, &tables[i], y)
+            })
+            .collect();
+        let plain = bins.iter().filter(|c| c.x_hi[0].is_finite()).count();
+        let sheared = bins.iter().filter(|c| c.d_lo[0].is_finite()).count();
+        progress(&format!(
+            "k checks between k = {} and {} (at {k_mid}): {plain} of {ny} bins in plain x, {sheared} at a fixed distance",
+            number(tables[i].k),
+            number(tables[i + 1].k),
+        ));
+        out.kcheck[i * ny..(i + 1) * ny].copy_from_slice(&bins);
+    }
+    out.header.push(format!(
+        "k checks: in each interval of k at its middle k, in y bins of {}, along every {CHECK_EVERY}nd node of the nearest row, to {}",
+        number(dy),
+        number(cfg.tol)
+    ));
+    Ok(out)
+}
+
+/// The limits of the cubic in ln k at `y` (as a cell's).
+fn check_bin(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    cache: &Cache,
+    all: &MasterTables,
+    curves: &EndCurves,
+    lower: &TableData,
+    y: f64,
+) -> CellData {
+    let Some(row) = lower
+        .rows
+        .iter()
+        .min_by(|a, b| (a.y - y).abs().total_cmp(&(b.y - y).abs()))
+    else {
+        return CellData::NONE;
+    };
+    let exact = |x: f64, v: usize| {
+        let p = cache.node(cfg, law, x, y);
+        if v == 0 {
+            p.stick()
+        } else {
+            p.onset()
+        }
+    };
+    let mut cell = CellData::NONE;
+    // plain x, from far from the end towards it
+    for (v, curve) in [(0, Curve::Stick), (1, Curve::OnsetBody)] {
+        let mut last_ok = f64::NEG_INFINITY;
+        for &x in row.body.x.iter().step_by(CHECK_EVERY) {
+            let Some(g) = all.g_plain_between_tables(curve, y, x, law.k()) else {
+                break;
+            };
+            if rel_diff(Some(1.0 + g.exp()), exact(x, v)) > cfg.tol {
+                break;
+            }
+            last_ok = x;
+        }
+        cell.x_hi[v] = last_ok;
+    }
+    // at a fixed distance to the end, within SHEARED_REACH of it
+    let Some(e) = curves.at(y, law.k()) else {
+        return cell;
+    };
+    for (c, curve, v) in [
+        (0, Curve::Stick, 0),
+        (1, Curve::OnsetBody, 1),
+        (2, Curve::OnsetStrip, 1),
+    ] {
+        let (piece, end_row, end) = match curve {
+            Curve::OnsetStrip => (&row.strip, row.x_on, e.x_on),
+            _ => (&row.body, row.x_s, e.x_s),
+        };
+        let us = piece
+            .x
+            .iter()
+            .step_by(CHECK_EVERY)
+            .map(|x| (end_row - x).ln())
+            .filter(|&u| u <= SHEARED_REACH.ln());
+        let mut last_ok = f64::INFINITY;
+        for u in us {
+            let Some(g) = all.g_between_tables(curve, y, u, law.k()) else {
+                continue;
+            };
+            if rel_diff(Some(1.0 + g.exp()), exact(end - u.exp(), v)) > cfg.tol {
+                break;
+            }
+            last_ok = u.exp();
+        }
+        cell.d_lo[c] = last_ok;
+    }
+    cell
+}

@@ -1,0 +1,303 @@
+//! Building the master tables with the exact search (`cargo xtask master-table`), and checking
+//! committed ones against it (`--check`).
+//!
+//! 1. **End curves** ([`ends`]): on a grid of y (every 1/64) and k (12 an octave), x_s, the x
+//!    where one collision at [`F_TOP`] V_stick,JKR stops bouncing (there F = F_TOP; a root of
+//!    V_out in x, continuous through the double-collision side), and x_on, where it starts to
+//!    stick (F_on = F_TOP; bisection), both to 1e-10 in x.
+//! 2. **Rows** ([`row`]): for each table k (k = 0.005 2^(i/3)) and each y, nodes from x = -17
+//!    every 0.5 up to one decade of c_D from x_s, then every 0.5 in u = ln(x_s - x) down to
+//!    x_s - 1e-5; every interval is checked at its midpoint in u against the local cubic and
+//!    halved where the two differ by more than [`BuildConfig::tol`]; the default search must
+//!    agree with each node to [`BuildConfig::agree`]. The strip (x_s to x_on) likewise in
+//!    w = ln(x_on - x), for F_on.
+//! 3. **Cells** ([`cells`]): rows every 0.5 in y; each cell is checked at mid-y on the nodes of
+//!    its two rows (at the distance to the interpolated end) and a row added in its middle where
+//!    the check fails, down to 1/64.
+//! 4. **k intervals** ([`kcheck`]): between tables of neighbouring k, the cubic in ln k is
+//!    checked at the middle k in every quarter of y.
+//!
+//! A node is the exact search ([`crate::sticking_thresholds`]) at a synthetic contact whose
+//! dimensionless numbers are the node's ([`synthetic`]), at `rel_tol` 1e-8 with collisions at
+//! rtol 1e-10: the search's own error (up to a few 1e-6 of V_stick within 1e-3 of the cliff
+//! at the default rtol 1e-8) stays out of the nodes.
+
+pub mod cells;
+pub mod check;
+pub mod ends;
+pub mod kcheck;
+pub mod row;
+
+use super::format::F_TOP;
+use crate::{sticking_thresholds, SearchOptions, ThresholdsError};
+use contact::{Contact, Geometry, Material};
+use dynamics::SolverOptions;
+use greenwood::CrackLaw;
+use std::collections::HashMap;
+use std::sync::Mutex;
+
+/// The settings of a build.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BuildConfig {
+    /// Relative width of the final brackets of each node's search: 1e-8.
+    pub rel_tol: f64,
+    /// The collisions of a node's search: rtol 1e-10 (atol 1e-13), a hundredth of the default
+    /// search's, so that a node is the search's limit rather than one of its approximations.
+    pub solver: SolverOptions,
+    /// The largest interpolation error a check accepts, relative to the ratio: 2e-6, a fifth of
+    /// the 1e-5 the tables promise, for the error between checks and of the k interpolation.
+    pub tol: f64,
+    /// The default search must agree with a node to this (relative): 4e-6. Near the cliff the
+    /// default search's own error grows (V_out is nearly flat in V_in there); where it exceeds
+    /// this, the tables stop vouching and the search answers (the band at the ends).
+    pub agree: f64,
+    /// Nodes with both ratios below this are not compared with the default search: there (far
+    /// from the cliff) the two agree to 1e-7 (`docs/performance.md`, "Accuracy").
+    pub agree_from: f64,
+    /// The smallest x = log10 c_D of a row: -17, below T_vis = 1e-16 s for every grain of the
+    /// domain (the JKR limit, where F has converged to 1e-9).
+    pub x_min: f64,
+    /// The first spacing of the nodes in x, more than a decade of c_D from the end.
+    pub x_step: f64,
+    /// The first spacing of the nodes in u = ln(distance to the end), within a decade.
+    pub u_step: f64,
+    /// The closest node to an end (in x): 1e-5, where the default search's own error near the
+    /// cliff reaches 1e-5 (CO2-like rows, y ~ 0).
+    pub d_min: f64,
+    /// The finest spacing of nodes in x.
+    pub min_x_step: f64,
+    /// The finest spacing of nodes in u.
+    pub min_u_step: f64,
+    /// The range of y = log10(c_D c_a): the domain's -5.8 to 5.1 (gamma_SV 0.01-0.3 J/m^2,
+    /// E 0.5-200 GPa, nu 0.1-0.45, reduced radius 5 nm - 1 cm; 99.99 % of its points lie in
+    /// -5.5 .. 4.5) and a row or more beyond.
+    pub y_range: (f64, f64),
+    /// The first spacing of the rows.
+    pub y_step: f64,
+    /// The finest spacing of the rows (the end curves' grid step).
+    pub min_y_step: f64,
+    /// The largest log10 c_a of a node (see the module documentation of `master`).
+    pub z_clamp: f64,
+    /// The tables' k: `k0 2^(i / per_octave)`, `i < count`.
+    pub table_k: (f64, usize, usize),
+    /// The end curves' k grid, likewise (a refinement of the tables').
+    pub ends_k: (f64, usize, usize),
+    /// The y bins of the k checks (their width).
+    pub kcheck_dy: f64,
+}
+
+impl BuildConfig {
+    /// The settings of the committed tables.
+    pub fn standard() -> Self {
+        Self {
+            rel_tol: 1e-8,
+            solver: SolverOptions {
+                rtol: 1e-10,
+                atol: 1e-13,
+                ..SearchOptions::default_solver()
+            },
+            tol: 2e-6,
+            agree: 4e-6,
+            agree_from: 5.0,
+            x_min: -17.0,
+            x_step: 0.5,
+            u_step: 0.5,
+            d_min: 1e-5,
+            min_x_step: 1.0 / 64.0,
+            min_u_step: 1.0 / 64.0,
+            y_range: (-6.0, 5.5),
+            y_step: 0.5,
+            min_y_step: 1.0 / 64.0,
+            z_clamp: 8.0,
+            table_k: (0.005, 3, 11),
+            ends_k: (0.005, 12, 41),
+            kcheck_dy: 0.25,
+        }
+    }
+
+    /// The k of the tables.
+    pub fn table_ks(&self) -> Vec<f64> {
+        let (k0, per, n) = self.table_k;
+        (0..n).map(|i| grid_k(k0, per, i)).collect()
+    }
+}
+
+/// `k0 2^(i / per_octave)`, exact at whole octaves.
+pub fn grid_k(k0: f64, per_octave: usize, i: usize) -> f64 {
+    let (whole, part) = (i / per_octave, i % per_octave);
+    k0 * 2f64.powi(whole as i32) * 2f64.powf(part as f64 / per_octave as f64)
+}
+
+/// V_stick,JKR of the synthetic contacts (m/s): that of 60 um CO2 grains, so that every search
+/// runs at ordinary speeds whatever the point (F_TOP V_stick,JKR = 200 m/s).
+const SYNTHETIC_V_STICK_JKR: f64 = 0.02;
+
+/// A contact and a relaxation time (s) whose dimensionless numbers are `c_D = 10^x` and
+/// `c_D c_a = 10^y`: two identical spheres with CO2's elastic constants, the radius that gives y
+/// (y goes as R^(-2/3)), the density that gives V_stick,JKR = 0.02 m/s times `density_factor`
+/// (y does not depend on it), and the T_vis that gives x.
+pub fn synthetic(x: f64, y: f64, density_factor: f64) -> Result<(Contact, f64), ThresholdsError> {
+    let co2 = Material::co2();
+    let reference = Contact::new(co2, Geometry::identical(60e-6))?;
+    let d = reference.dimensionless(1.0);
+    let radius = 60e-6 * 10f64.powf(-1.5 * (y - (d.c_d * d.c_a).log10()));
+    let sized = Contact::new(co2, Geometry::identical(radius))?;
+    let density =
+        co2.density * (sized.v_stick_jkr() / SYNTHETIC_V_STICK_JKR).powi(2) * density_factor;
+    let contact = Contact::new(Material { density, ..co2 }, Geometry::identical(radius))?;
+    let t_vis = 10f64.powf(x) / contact.dimensionless(1.0).c_d;
+    Ok((contact, t_vis))
+}
+
+/// Density factors of the synthetic contacts tried in turn when a computation fails: the same
+/// dimensionless problem, rounded differently.
+pub const RETRY_DENSITY: [f64; 3] = [1.0, 1.37, 0.61];
+
+/// The exact search at one point (ratios to V_stick,JKR).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Point {
+    /// Both thresholds below the search limit.
+    Bounce {
+        /// F = V_stick / V_stick,JKR.
+        f_stick: f64,
+        /// F_on = V_double_onset / V_stick,JKR.
+        f_onset: f64,
+    },
+    /// No bouncing below the limit, but double collisions from F_on on.
+    OnsetOnly {
+        /// F_on.
+        f_onset: f64,
+    },
+    /// Every collision below the limit sticks.
+    NoBounce,
+    /// The search failed for every synthetic contact tried.
+    Failed,
+}
+
+impl Point {
+    /// F, where there is one.
+    pub fn stick(self) -> Option<f64> {
+        match self {
+            Point::Bounce { f_stick, .. } => Some(f_stick),
+            _ => None,
+        }
+    }
+
+    /// F_on, where there is one.
+    pub fn onset(self) -> Option<f64> {
+        match self {
+            Point::Bounce { f_onset, .. } | Point::OnsetOnly { f_onset } => Some(f_onset),
+            _ => None,
+        }
+    }
+}
+
+/// The search at `(x, y)` (c_a clamped at `10^z_clamp`) with `opts` (its `v_max` set to
+/// `f_max` V_stick,JKR), without a hint, so that a node can be recomputed to the bit.
+pub fn search(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    x: f64,
+    y: f64,
+    f_max: f64,
+    opts: &SearchOptions,
+) -> Point {
+    let y = y.min(x + cfg.z_clamp);
+    for factor in RETRY_DENSITY {
+        let Ok((contact, t_vis)) = synthetic(x, y, factor) else {
+            return Point::Failed;
+        };
+        let jkr = contact.v_stick_jkr();
+        let o = SearchOptions {
+            v_max: Some(f_max * jkr),
+            method: crate::ThresholdMethod::Search,
+            ..*opts
+        };
+        if let Ok(th) = sticking_thresholds(&contact, law, t_vis, &o) {
+            return match (th.v_stick, th.v_double_onset) {
+                (Some(s), Some(o)) => Point::Bounce {
+                    f_stick: s / jkr,
+                    f_onset: o / jkr,
+                },
+                (None, Some(o)) => Point::OnsetOnly { f_onset: o / jkr },
+                _ => Point::NoBounce,
+            };
+        }
+    }
+    Point::Failed
+}
+
+/// A node: the exact search of the build (`rel_tol` 1e-8, collisions at rtol 1e-10) up to
+/// twice [`F_TOP`] V_stick,JKR.
+pub fn node(cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64) -> Point {
+    let opts = SearchOptions {
+        rel_tol: cfg.rel_tol,
+        solver: cfg.solver,
+        ..SearchOptions::exact()
+    };
+    search(cfg, law, x, y, 2.0 * F_TOP, &opts)
+}
+
+/// The default search (what a user's `method="search"` runs) at the same point and limit.
+pub fn default_search(cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64) -> Point {
+    search(cfg, law, x, y, 2.0 * F_TOP, &SearchOptions::exact())
+}
+
+/// Nodes computed so far in one table's build, keyed by `(x, y)` to 1e-12: rows and cell checks
+/// share them.
+#[derive(Default)]
+pub struct Cache(Mutex<HashMap<(i64, i64), Point>>);
+
+impl Cache {
+    fn key(x: f64, y: f64) -> (i64, i64) {
+        ((x * 1e12).round() as i64, (y * 1e12).round() as i64)
+    }
+
+    /// The node at `(x, y)`, computed once.
+    pub fn node(&self, cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64) -> Point {
+        let key = Self::key(x, y);
+        if let Some(p) = self.0.lock().ok().and_then(|m| m.get(&key).copied()) {
+            return p;
+        }
+        let p = node(cfg, law, x, y);
+        if let Ok(mut m) = self.0.lock() {
+            m.insert(key, p);
+        }
+        p
+    }
+}
+
+/// The relative difference of two ratios (infinite when either is missing).
+pub fn rel_diff(a: Option<f64>, b: Option<f64>) -> f64 {
+    match (a, b) {
+        (Some(a), Some(b)) => (a / b - 1.0).abs(),
+        _ => f64::INFINITY,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The synthetic contact has the dimensionless numbers asked for, and V_stick,JKR = 0.02 m/s.
+    #[test]
+    fn synthetic_contacts_hit_their_point() {
+        for (x, y) in [(-3.0, -1.0), (-0.5, 4.0), (-10.0, -5.5)] {
+            let (c, t) = synthetic(x, y, 1.0).unwrap();
+            let d = c.dimensionless(t);
+            assert!(
+                (d.c_d.log10() - x).abs() < 1e-12 && ((d.c_d * d.c_a).log10() - y).abs() < 1e-12
+            );
+            assert!((c.v_stick_jkr() / SYNTHETIC_V_STICK_JKR - 1.0).abs() < 1e-12);
+        }
+    }
+
+    /// The grid's k are exact at whole octaves: 0.01 and 0.02 are tables of their own.
+    #[test]
+    fn grid_k_is_exact_at_octaves() {
+        assert_eq!(grid_k(0.005, 3, 3), 0.01);
+        assert_eq!(grid_k(0.005, 3, 6), 0.02);
+        assert_eq!(grid_k(0.005, 12, 12), 0.01);
+        assert!((grid_k(0.005, 3, 10) / 0.0504 - 1.0).abs() < 1e-3);
+    }
+}

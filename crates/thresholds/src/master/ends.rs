@@ -1,0 +1,86 @@
+//! The end curves x_s(y, k) (where F = V_stick/V_stick,JKR reaches [`super::F_TOP`]) and
+//! x_on(y, k) (where F_on does), interpolated from their grid in y and ln k.
+//!
+//! Near its end F is steep in x (V_stick diverges at the cliff, roughly as a power of
+//! ln(1/(x_c - x))), so the tables interpolate it at a fixed distance `d = x_s - x` to the end,
+//! and a query needs x_s at its own (y, k) far more precisely than the rows' spacing would give:
+//! the grid is fine (1/64 in y, 12 steps an octave of k) and each point is a root found to
+//! 1e-10 in x, so that the bicubic interpolant is good to about 1e-9.
+
+use super::format::EndsData;
+use super::interp::uniform_weights;
+
+/// The end curves, ready to interpolate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EndCurves {
+    data: EndsData,
+    /// ln of the first k.
+    ln_k0: f64,
+    /// k steps per unit of ln k.
+    per_ln: f64,
+}
+
+/// x_s and x_on at one (y, k).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Ends {
+    /// log10 c_D where F = V_stick/V_stick,JKR reaches [`super::F_TOP`].
+    pub x_s: f64,
+    /// log10 c_D where F_on = V_double_onset/V_stick,JKR reaches it (at least `x_s`).
+    pub x_on: f64,
+}
+
+impl EndCurves {
+    /// The interpolation form of `data`.
+    pub fn new(data: EndsData) -> Self {
+        Self {
+            ln_k0: data.k0.ln(),
+            per_ln: data.per_octave as f64 / std::f64::consts::LN_2,
+            data,
+        }
+    }
+
+    /// The grid's data.
+    pub fn data(&self) -> &EndsData {
+        &self.data
+    }
+
+    /// The k of grid column `j`.
+    pub fn k_at(&self, j: usize) -> f64 {
+        self.data.k0 * 2f64.powf(j as f64 / self.data.per_octave as f64)
+    }
+
+    /// The range of k the grid spans.
+    pub fn k_range(&self) -> (f64, f64) {
+        (self.data.k0, self.k_at(self.data.nk - 1))
+    }
+
+    /// The y of grid row `i`.
+    pub fn y_at(&self, i: usize) -> f64 {
+        self.data.y0 + i as f64 * self.data.dy
+    }
+
+    /// The end curves at `(y, k)` by the bicubic interpolant of the grid; `None` outside the
+    /// grid, where a value of the 4 x 4 stencil is missing, or next to a kink of the curves.
+    pub fn at(&self, y: f64, k: f64) -> Option<Ends> {
+        let d = &self.data;
+        let fy = (y - d.y0) / d.dy;
+        let fk = (k.ln() - self.ln_k0) * self.per_ln;
+        let (iy, wy) = uniform_weights(fy, d.ny)?;
+        let (ik, wk) = uniform_weights(fk, d.nk)?;
+        let (mut s, mut o) = (0.0, 0.0);
+        for (a, &w_k) in wk.iter().enumerate() {
+            for (b, &w_y) in wy.iter().enumerate() {
+                let at = (ik + a) * d.ny + iy + b;
+                if !d.valid[at] {
+                    return None;
+                }
+                s += w_k * w_y * d.x_s[at];
+                o += w_k * w_y * d.x_on[at];
+            }
+        }
+        (s.is_finite() && o.is_finite()).then_some(Ends {
+            x_s: s,
+            x_on: o.max(s),
+        })
+    }
+}

@@ -1,0 +1,137 @@
+//! One k's table: a ratio at a point, where the table vouches for it.
+//!
+//! Each row of constant y holds two pieces ([`format::Piece`]): the *body* (x below x_s, F and
+//! F_on, interpolated in u = ln(x_s - x)) and the *strip* (x between x_s and x_on, F_on only, in
+//! w = ln(x_on - x)). Each row is interpolated by the local cubic in its own coordinate, then
+//! the four rows around y by the cubic in y, in one of two ways:
+//!
+//! - *plain*: every row at the query's x ([`Table::g_plain`]): no end curve needed; good where
+//!   the ratios are smooth in x and y, far from the cliff (and all the way to x_s where F rises
+//!   as a power of c_D instead of diverging);
+//! - *sheared*: every row at the query's distance to its own end, u ([`Table::g_at`]): near the
+//!   cliff, where F is steep in x but smooth in u; it needs the end at the query's y.
+//!
+//! Each is vouched for where every row and the cell between the two middle rows were checked:
+//! plain up to an x, sheared down to a distance to the end.
+
+use super::format::{self, Piece, Table};
+use super::interp::{interval, lagrange, local_cubic, stencil_start};
+
+/// Which piece of the rows, and which ratio.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Curve {
+    /// F = V_stick / V_stick,JKR on the body (u = ln(x_s - x)).
+    Stick,
+    /// F_on = V_double_onset / V_stick,JKR on the body (u = ln(x_s - x)).
+    OnsetBody,
+    /// F_on on the strip (w = ln(x_on - x)).
+    OnsetStrip,
+}
+
+impl Curve {
+    /// The piece's ratio index (0: F, 1: F_on) and the index of its sheared limit in a cell.
+    fn indices(self) -> (usize, usize) {
+        match self {
+            Curve::Stick => (0, 2),
+            Curve::OnsetBody => (1, 3),
+            Curve::OnsetStrip => (1, 4),
+        }
+    }
+
+    fn piece(self, row: &format::Row) -> &Piece {
+        match self {
+            Curve::OnsetStrip => &row.strip,
+            _ => &row.body,
+        }
+    }
+}
+
+impl Table {
+    /// The four rows around `y` (the first index), with their cell; `None` unless `y` lies in a
+    /// cell with a full stencil that is not one of the two end cells.
+    fn stencil(&self, y: f64) -> Option<(usize, usize)> {
+        let n = self.rows.len();
+        if n < 4 || !(y >= self.ys[1] && y <= self.ys[n - 2]) {
+            return None;
+        }
+        let j = interval(&self.ys, y);
+        Some((stencil_start(j, n), j))
+    }
+
+    /// The smallest u at which `curve` is vouched for at `y` (the largest of the rows' and the
+    /// cell's limits), and the largest u the rows hold (their first node, far from the end).
+    pub fn vouched(&self, curve: Curve, y: f64) -> Option<(f64, f64)> {
+        let (s, j) = self.stencil(y)?;
+        let (v, c) = curve.indices();
+        let mut lo = self.cells[j][c];
+        let mut hi = f64::INFINITY;
+        for row in &self.rows[s..s + 4] {
+            let p = curve.piece(row);
+            if p.u.len() < 2 {
+                return None;
+            }
+            lo = lo.max(p.u_lo[v]);
+            hi = hi.min(p.u[p.u.len() - 1]);
+        }
+        (lo <= hi).then_some((lo, hi))
+    }
+
+    /// `g = ln(ratio - 1)` of `curve` at `y` and `u` (the log of the distance to the curve's end),
+    /// interpolated without asking whether it is vouched for.
+    pub fn g_at(&self, curve: Curve, y: f64, u: f64) -> Option<f64> {
+        let (s, _) = self.stencil(y)?;
+        let (v, _) = curve.indices();
+        let mut g = [0.0; 4];
+        for (q, row) in self.rows[s..s + 4].iter().enumerate() {
+            let p = curve.piece(row);
+            g[q] = local_cubic(&p.u, &p.g[v], u);
+        }
+        let g = lagrange(&self.ys[s..s + 4], &g, y);
+        g.is_finite().then_some(g)
+    }
+
+    /// The largest x up to which the body's ratio of `curve` interpolated in plain x at `y` is
+    /// vouched for (every row vouched for at that x, and the cell checked up to it).
+    pub fn plain_limit(&self, curve: Curve, y: f64) -> Option<f64> {
+        let (s, j) = self.stencil(y)?;
+        let (v, _) = curve.indices();
+        if curve == Curve::OnsetStrip {
+            return None;
+        }
+        let mut hi = self.cells[j][v];
+        for row in &self.rows[s..s + 4] {
+            if row.body.u.len() < 2 {
+                return None;
+            }
+            hi = hi.min(row.x_s - row.body.u_lo[v].exp());
+        }
+        hi.is_finite().then_some(hi)
+    }
+
+    /// `g = ln(ratio - 1)` of the body's `curve` at `y` and `x`, every row at that x (far from
+    /// the end: beyond the rows' first node, the value there), without asking whether it is
+    /// vouched for.
+    pub fn g_plain(&self, curve: Curve, y: f64, x: f64) -> Option<f64> {
+        let (s, _) = self.stencil(y)?;
+        let (v, _) = curve.indices();
+        let mut g = [0.0; 4];
+        for (q, row) in self.rows[s..s + 4].iter().enumerate() {
+            let p = &row.body;
+            let far = *p.u.last()?;
+            let u = (row.x_s - x).ln().min(far);
+            if !u.is_finite() {
+                return None;
+            }
+            g[q] = local_cubic(&p.u, &p.g[v], u);
+        }
+        let g = lagrange(&self.ys[s..s + 4], &g, y);
+        g.is_finite().then_some(g)
+    }
+
+    /// Whether every row of the stencil at `y` has ratios that increase towards the end (and
+    /// was found without bouncing beyond it up to [`super::F_TOP`]).
+    pub fn monotone(&self, y: f64) -> bool {
+        self.stencil(y)
+            .is_some_and(|(s, _)| self.rows[s..s + 4].iter().all(|r| r.monotone))
+    }
+}

@@ -1,0 +1,342 @@
+//! Building the restitution tables from single collisions (`cargo xtask restitution-table`).
+//!
+//! For each table k of the master tables and each row y (every [`BuildConfig::y_step`]), nodes
+//! every [`BuildConfig::x_step`] from x = [`BuildConfig::x_min`] (the JKR plateau: the rebound
+//! no longer changes with c_D below it) up to one decade of c_D from the row's end, then every
+//! [`BuildConfig::u_step`] in u = ln(x_s - x) down to [`BuildConfig::d_min`]. At each node the
+//! master tables give V_stick and V_double_onset, and one collision (rtol 1e-9) is integrated at
+//! every channel. Each cell between two rows is then checked at its centre at a few speeds
+//! between the channels against the ODE ([`BuildConfig::tol_e`]), and each interval between
+//! tables of neighbouring k at its middle k.
+
+use super::format::{NodeData, RowData, Table, TableData};
+use super::{RestitutionTables, MIN_WINDOW};
+use crate::master::build::{grid_k, synthetic};
+use crate::master::format::EndsData;
+use crate::master::{MasterTables, F_TOP};
+use crate::{Collider, Outcome, SolverOptions, ThresholdsError};
+use greenwood::CrackLaw;
+use numerics::format::number;
+use rayon::prelude::*;
+
+/// The settings of a build.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BuildConfig {
+    /// The bouncing channels, sigma = ln(V_in / V_stick): every 0.1 up to 1, every 0.25 up to 3,
+    /// every 0.5 up to 9.5 (V_in up to 1.3e4 V_stick; the rebound saturates far above V_stick).
+    pub sigma: Vec<f64>,
+    /// The double-collision channels, nu in [0, 0.999] (nu = 1 is the onset, where the outcome
+    /// jumps).
+    pub nu: Vec<f64>,
+    /// Row spacing in y.
+    pub y_step: f64,
+    /// The y range.
+    pub y_range: (f64, f64),
+    /// The first node of a row: -12 (at smaller c_D the rebound is that of the JKR limit).
+    pub x_min: f64,
+    /// Node spacing in x, more than a decade of c_D from the end.
+    pub x_step: f64,
+    /// Node spacing in u = ln(x_s - x) within a decade of the end.
+    pub u_step: f64,
+    /// The closest node to the end (in x).
+    pub d_min: f64,
+    /// The collisions: rtol 1e-9 (e to about 1e-8).
+    pub solver: SolverOptions,
+    /// A cell is vouched for where the interpolated e is within this of the ODE's at its centre:
+    /// 5e-5, half the 1e-4 promised.
+    pub tol_e: f64,
+    /// The bouncing speeds a cell is checked at (between channels).
+    pub check_sigma: Vec<f64>,
+    /// The double-collision speeds a cell is checked at.
+    pub check_nu: Vec<f64>,
+}
+
+impl BuildConfig {
+    /// The settings of the committed tables.
+    pub fn standard() -> Self {
+        let mut sigma: Vec<f64> = (0..=10).map(|i| i as f64 * 0.1).collect();
+        sigma.extend((1..=8).map(|i| 1.0 + i as f64 * 0.25));
+        sigma.extend((1..=13).map(|i| 3.0 + i as f64 * 0.5));
+        Self {
+            sigma,
+            nu: (0..=10).map(|i| i as f64 * 0.0999).collect(),
+            y_step: 0.5,
+            y_range: (-6.5, 6.0),
+            x_min: -12.0,
+            x_step: 0.5,
+            u_step: 0.5,
+            d_min: 1e-3,
+            solver: SolverOptions::default(),
+            tol_e: 5e-5,
+            check_sigma: vec![0.05, 0.35, 0.85, 1.6, 3.75, 6.25],
+            check_nu: vec![0.45, 0.95],
+        }
+    }
+}
+
+/// `(outcome, V_out / V_stick,JKR)` of one collision at `(x, y)` for `law`, at `s` V_stick,JKR.
+fn collide(cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64, s: f64) -> Option<(Outcome, f64)> {
+    let (contact, t_vis) = synthetic(x, y.min(x + 8.0), 1.0).ok()?;
+    let jkr = contact.v_stick_jkr();
+    let c = Collider::new(contact, law, t_vis)
+        .ok()?
+        .with_options(cfg.solver)
+        .ok()?;
+    let r = c.collide(s * jkr).ok()?;
+    Some((r.outcome, r.v_out / jkr))
+}
+
+/// `h = w |w|` with `w = V_out / V_stick` of the collision at channel `q` (sigma when
+/// `bouncing`, else nu) of the node at `(x, y)` with ratios `f`, `f_on`; NaN where it cannot be
+/// had.
+#[allow(clippy::too_many_arguments)]
+pub fn node_channel(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    x: f64,
+    y: f64,
+    f: f64,
+    f_on: f64,
+    bouncing: bool,
+    q: f64,
+) -> f64 {
+    if q == 0.0 {
+        return 0.0;
+    }
+    let window = (f / f_on).ln();
+    let s = if bouncing {
+        f * q.exp()
+    } else if window >= MIN_WINDOW {
+        f * (-q * window).exp()
+    } else {
+        return f64::NAN;
+    };
+    if s > F_TOP * 1.3 {
+        return f64::NAN;
+    }
+    match collide(cfg, law, x, y, s) {
+        Some((Outcome::Sticking, _)) | None => f64::NAN,
+        Some((_, v_out)) => {
+            let w = v_out / f;
+            w * w.abs()
+        }
+    }
+}
+
+/// The master tables' F and F_on at a point (both below F_TOP), if they vouch for them.
+fn ratios(masters: &MasterTables, x: f64, y: f64, k: f64) -> Option<(f64, f64)> {
+    let r = masters.ratios_at(x, y, k, F_TOP * (1.0 - 1e-3))?;
+    Some((r.v_stick?, r.v_double_onset?))
+}
+
+/// e = -V_out / V_in from `h` at `s` V_stick,JKR with V_stick = `f` V_stick,JKR.
+fn e_of(h: f64, f: f64, s: f64, bouncing: bool) -> f64 {
+    let w = if bouncing {
+        -(-h).max(0.0).sqrt()
+    } else {
+        h.max(0.0).sqrt()
+    };
+    -w * f / s
+}
+
+/// One row of the table of `law`'s k at `y` ending at `x_s`.
+fn build_row(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    masters: &MasterTables,
+    y: f64,
+    x_s: f64,
+) -> RowData {
+    let mut xs = Vec::new();
+    let mut x = cfg.x_min;
+    while x < x_s - 1.0 {
+        xs.push(x);
+        x += cfg.x_step;
+    }
+    let mut u = (x_s - cfg.x_min).ln().min(0.0);
+    while u >= cfg.d_min.ln() - 1e-9 {
+        xs.push(x_s - u.exp());
+        u -= cfg.u_step;
+    }
+    let nodes: Vec<NodeData> = xs
+        .par_iter()
+        .map(|&x| {
+            let (f, f_on) = ratios(masters, x, y, law.k()).unwrap_or((f64::NAN, f64::NAN));
+            let mut h = Vec::with_capacity(cfg.sigma.len() + cfg.nu.len());
+            for (bouncing, grid) in [(true, &cfg.sigma), (false, &cfg.nu)] {
+                for &q in grid {
+                    h.push(if f.is_finite() {
+                        node_channel(cfg, law, x, y, f, f_on, bouncing, q)
+                    } else {
+                        f64::NAN
+                    });
+                }
+            }
+            NodeData { x, f, f_on, h }
+        })
+        .collect();
+    let cells = vec![false; nodes.len().saturating_sub(1)];
+    RowData {
+        y,
+        x_s,
+        nodes,
+        cells,
+        kcells: Vec::new(),
+    }
+}
+
+/// Whether the tables' e at `(x, y, k)` is within `tol_e` of the ODE at every check speed.
+fn check_point(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    tables: &RestitutionTables,
+    masters: &MasterTables,
+    x: f64,
+    y: f64,
+) -> bool {
+    let Some((f, f_on)) = ratios(masters, x, y, law.k()) else {
+        return false;
+    };
+    let window = (f / f_on).ln();
+    let speeds = cfg.check_sigma.iter().map(|&q| (true, q)).chain(
+        cfg.check_nu
+            .iter()
+            .map(|&q| (false, q))
+            .filter(|_| window >= MIN_WINDOW),
+    );
+    for (bouncing, q) in speeds {
+        let s = if bouncing {
+            f * q.exp()
+        } else {
+            f * (-q * window).exp()
+        };
+        if s > F_TOP {
+            continue;
+        }
+        let Some(h) = tables.h_unchecked(x, y, law.k(), bouncing, q) else {
+            return false;
+        };
+        let Some((outcome, v_out)) = collide(cfg, law, x, y, s) else {
+            return false;
+        };
+        let exact = if outcome == Outcome::Sticking {
+            0.0
+        } else {
+            -v_out / s
+        };
+        if (e_of(h, f, s, bouncing) - exact).abs() > cfg.tol_e {
+            return false;
+        }
+    }
+    true
+}
+
+/// The centre of the cell of row `j`'s interval `i` (its nodes in increasing x).
+fn centre(rows: &[RowData], j: usize, i: usize) -> (f64, f64) {
+    let r = &rows[j];
+    let (a, b) = (r.nodes[i].x, r.nodes[i + 1].x);
+    let u = 0.5 * ((r.x_s - a).ln() + (r.x_s - b).ln());
+    (r.x_s - u.exp(), 0.5 * (r.y + rows[j + 1].y))
+}
+
+/// The table of the master tables' `k_index`-th k, on their end curves `ends`.
+pub fn build_table(
+    cfg: &BuildConfig,
+    k_index: usize,
+    ends: &EndsData,
+    masters: &MasterTables,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<TableData, ThresholdsError> {
+    let per = ends.per_octave / 3;
+    let k = grid_k(ends.k0, 3, k_index);
+    let law = CrackLaw::new(k)?;
+    let (y0, y1) = cfg.y_range;
+    let n = ((y1 - y0) / cfg.y_step).round() as usize + 1;
+    let rows: Vec<RowData> = (0..n)
+        .filter_map(|i| {
+            let y = y0 + i as f64 * cfg.y_step;
+            let at = (k_index * per) * ends.ny + ((y - ends.y0) / ends.dy).round() as usize;
+            let x_s = *ends.x_s.get(at)?;
+            x_s.is_finite().then(|| {
+                let r = build_row(cfg, &law, masters, y, x_s);
+                progress(&format!(
+                    "restitution k = {k}, row y = {y}: {} nodes",
+                    r.nodes.len()
+                ));
+                r
+            })
+        })
+        .collect();
+    let mut table = TableData {
+        k,
+        header: vec![
+            format!("restitution table: h = w |w|, w = V_out/V_stick, over x = log10 c_D, y = log10(c_D c_a), k = {k}, at channels sigma = ln(V_in/V_stick) (bouncing) and nu = ln(V_stick/V_in)/ln(F/F_on) (double collisions); V_stick and V_on from the master tables"),
+            format!("nodes: one collision at rtol {} per channel; cells checked at their centres against the ODE to {} in e", number(cfg.solver.rtol), number(cfg.tol_e)),
+        ],
+        sigma: cfg.sigma.clone(),
+        nu: cfg.nu.clone(),
+        rows,
+    };
+    let tables = RestitutionTables::from_parts(vec![Table::from_data(&table)]);
+    let checks: Vec<(usize, Vec<bool>)> = (0..table.rows.len().saturating_sub(1))
+        .into_par_iter()
+        .map(|j| {
+            let flags = (0..table.rows[j].nodes.len().saturating_sub(1))
+                .map(|i| {
+                    let (x, y) = centre(&table.rows, j, i);
+                    check_point(cfg, &law, &tables, masters, x, y)
+                })
+                .collect();
+            (j, flags)
+        })
+        .collect();
+    for (j, flags) in checks {
+        let good = flags.iter().filter(|&&b| b).count();
+        progress(&format!(
+            "restitution k = {k}, cells of row {j}: {good} of {} vouched",
+            flags.len()
+        ));
+        table.rows[j].cells = flags;
+    }
+    Ok(table)
+}
+
+/// Fills the k cells of `tables` (in increasing k): each cell of table i checked at the middle
+/// k between it and table i + 1 with the cubic in ln k.
+pub fn k_cells(
+    cfg: &BuildConfig,
+    tables: &mut [TableData],
+    masters: &MasterTables,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<(), ThresholdsError> {
+    let all = RestitutionTables::from_parts(tables.iter().map(Table::from_data).collect());
+    for i in 0..tables.len().saturating_sub(1) {
+        let k_mid = (tables[i].k * tables[i + 1].k).sqrt();
+        let law = CrackLaw::new(k_mid)?;
+        let rows = &tables[i].rows;
+        let flags: Vec<Vec<bool>> = (0..rows.len())
+            .into_par_iter()
+            .map(|j| {
+                if j + 1 >= rows.len() {
+                    return vec![false; rows[j].nodes.len().saturating_sub(1)];
+                }
+                (0..rows[j].nodes.len().saturating_sub(1))
+                    .map(|c| {
+                        let (x, y) = centre(rows, j, c);
+                        check_point(cfg, &law, &all, masters, x, y)
+                    })
+                    .collect()
+            })
+            .collect();
+        let good: usize = flags.iter().map(|f| f.iter().filter(|&&b| b).count()).sum();
+        progress(&format!(
+            "restitution k cells between k = {} and {}: {good} vouched",
+            tables[i].k,
+            tables[i + 1].k
+        ));
+        for (r, f) in tables[i].rows.iter_mut().zip(flags) {
+            r.kcells = f;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,378 @@
+//! The restitution tables as data: text (the committed `data/restitution_k<k>.csv`) and binary
+//! (what the library embeds), with nothing but `std`, so that the build script includes this
+//! file and reads them with the library's own code.
+//!
+//! One table a k, as text (`#` lines first):
+//! ```text
+//! k,<k>
+//! sigma,<sigma_0>,...          the bouncing channels: V_in = V_stick e^sigma
+//! nu,<nu_0>,...                the double-collision channels: V_in = V_stick (F_on/F)^nu
+//! row,<y>,<x_s>                a row of constant y = log10(c_D c_a), its end x_s
+//! rnode,<x>,<F>,<F_on>,<h...>  a node: x = log10 c_D, the ratios, h at every channel (nan: none)
+//! cells,<0|1 ...>              per interval of this row's nodes: its cell to the next row vouched
+//! kcells,<0|1 ...>             the same cells, for the cubic in ln k up to the next table
+//! ```
+//! `h = w |w|` with `w = V_out / V_stick` (V_out < 0: bouncing, > 0: a double collision), which
+//! is smooth in sigma from the JKR limit (where `h = 1 - e^(2 sigma)`) to strong damping
+//! (`h ~ -sigma^2`), and vanishes at V_stick on both sides.
+
+/// One node: its position, the threshold ratios there and `h` at every channel.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NodeData {
+    /// log10 c_D.
+    pub x: f64,
+    /// F = V_stick / V_stick,JKR.
+    pub f: f64,
+    /// F_on = V_double_onset / V_stick,JKR.
+    pub f_on: f64,
+    /// h at the sigma channels, then at the nu channels (NaN where not computed).
+    pub h: Vec<f64>,
+}
+
+/// One row of constant y.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RowData {
+    /// log10 (c_D c_a).
+    pub y: f64,
+    /// The end of the row (the master tables' x_s): the nodes' coordinate is ln(x_s - x).
+    pub x_s: f64,
+    /// Nodes in increasing x.
+    pub nodes: Vec<NodeData>,
+    /// Per interval of the nodes: the cell from this row to the next vouched for.
+    pub cells: Vec<bool>,
+    /// The same cells, vouched for the cubic in ln k up to the next table.
+    pub kcells: Vec<bool>,
+}
+
+/// The restitution table of one k.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TableData {
+    /// k.
+    pub k: f64,
+    /// The `#` lines.
+    pub header: Vec<String>,
+    /// The bouncing channels (sigma = ln(V_in / V_stick)), increasing from 0.
+    pub sigma: Vec<f64>,
+    /// The double-collision channels (nu = ln(V_stick/V_in) / ln(F/F_on)), increasing from 0.
+    pub nu: Vec<f64>,
+    /// Rows in increasing y.
+    pub rows: Vec<RowData>,
+}
+
+/// A file that cannot be read.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct FormatError {
+    /// 1-based line (0: the file).
+    pub line: usize,
+    /// What is wrong.
+    pub problem: String,
+}
+
+fn numbers(line: usize, fields: &[&str]) -> Result<Vec<f64>, FormatError> {
+    fields
+        .iter()
+        .map(|f| {
+            f.trim().parse::<f64>().map_err(|_| FormatError {
+                line,
+                problem: format!("'{f}' is not a number"),
+            })
+        })
+        .collect()
+}
+
+fn bits(line: usize, field: Option<&&str>) -> Result<Vec<bool>, FormatError> {
+    field
+        .unwrap_or(&"")
+        .chars()
+        .map(|c| match c {
+            '0' => Ok(false),
+            '1' => Ok(true),
+            _ => Err(FormatError {
+                line,
+                problem: "cells are 0 or 1".into(),
+            }),
+        })
+        .collect()
+}
+
+/// Reads a table from its text.
+pub fn parse(text: &str) -> Result<TableData, FormatError> {
+    let mut t = TableData {
+        k: f64::NAN,
+        header: Vec::new(),
+        sigma: Vec::new(),
+        nu: Vec::new(),
+        rows: Vec::new(),
+    };
+    for (i, line) in text.lines().enumerate() {
+        let n = i + 1;
+        if let Some(h) = line.strip_prefix('#') {
+            t.header.push(h.trim_start().to_string());
+            continue;
+        }
+        let fields: Vec<&str> = line.split(',').collect();
+        let bad = |p: &str| FormatError {
+            line: n,
+            problem: p.into(),
+        };
+        match fields[0] {
+            "" => {}
+            "k" => {
+                t.k = numbers(n, &fields[1..])?
+                    .first()
+                    .copied()
+                    .unwrap_or(f64::NAN)
+            }
+            "sigma" => t.sigma = numbers(n, &fields[1..])?,
+            "nu" => t.nu = numbers(n, &fields[1..])?,
+            "row" => {
+                let v = numbers(n, &fields[1..])?;
+                if v.len() != 2 {
+                    return Err(bad("a row has y and x_s"));
+                }
+                t.rows.push(RowData {
+                    y: v[0],
+                    x_s: v[1],
+                    nodes: Vec::new(),
+                    cells: Vec::new(),
+                    kcells: Vec::new(),
+                });
+            }
+            "rnode" => {
+                let channels = t.sigma.len() + t.nu.len();
+                let v = numbers(n, &fields[1..])?;
+                let row = t
+                    .rows
+                    .last_mut()
+                    .ok_or_else(|| bad("a node before any row"))?;
+                if v.len() != 3 + channels {
+                    return Err(bad("a node has x, F, F_on and a value at every channel"));
+                }
+                if row.nodes.last().is_some_and(|p| p.x >= v[0]) {
+                    return Err(bad("nodes must increase in x"));
+                }
+                row.nodes.push(NodeData {
+                    x: v[0],
+                    f: v[1],
+                    f_on: v[2],
+                    h: v[3..].to_vec(),
+                });
+            }
+            "cells" => {
+                let b = bits(n, fields.get(1))?;
+                t.rows
+                    .last_mut()
+                    .ok_or_else(|| bad("cells before any row"))?
+                    .cells = b;
+            }
+            "kcells" => {
+                let b = bits(n, fields.get(1))?;
+                t.rows
+                    .last_mut()
+                    .ok_or_else(|| bad("cells before any row"))?
+                    .kcells = b;
+            }
+            other => return Err(bad(&format!("unknown record '{other}'"))),
+        }
+    }
+    let cells_fit = t.rows.iter().all(|r| {
+        let m = r.nodes.len().saturating_sub(1);
+        r.cells.len() == m && (r.kcells.is_empty() || r.kcells.len() == m)
+    });
+    if !(t.k > 0.0 && t.k < 1.0 && !t.sigma.is_empty() && t.nu.len() >= 2 && cells_fit) {
+        return Err(FormatError {
+            line: 0,
+            problem: "a table needs k in (0, 1), channels, and a cell flag per interval of nodes"
+                .into(),
+        });
+    }
+    Ok(t)
+}
+
+/// A row ready to interpolate: the nodes in increasing u = ln(x_s - x).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// y.
+    pub y: f64,
+    /// x_s.
+    pub x_s: f64,
+    /// ln(x_s - x) of the nodes, increasing (the nodes in decreasing x).
+    pub u: Vec<f64>,
+    /// h of node i at channel c: `h[i * channels + c]`.
+    pub h: Vec<f64>,
+    /// Cell flags in the same (decreasing x) order of intervals.
+    pub cells: Vec<bool>,
+    /// k-cell flags likewise (empty: none).
+    pub kcells: Vec<bool>,
+}
+
+/// A table ready to interpolate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// k.
+    pub k: f64,
+    /// The channels' coordinates: sigma then nu.
+    pub sigma: Vec<f64>,
+    /// The nu channels.
+    pub nu: Vec<f64>,
+    /// The rows' y.
+    pub ys: Vec<f64>,
+    /// The rows.
+    pub rows: Vec<Row>,
+}
+
+impl Table {
+    /// The interpolation form of `t`.
+    pub fn from_data(t: &TableData) -> Table {
+        let rows = t
+            .rows
+            .iter()
+            .map(|r| {
+                let rev = |v: &[bool]| v.iter().rev().copied().collect::<Vec<bool>>();
+                Row {
+                    y: r.y,
+                    x_s: r.x_s,
+                    u: r.nodes.iter().rev().map(|p| (r.x_s - p.x).ln()).collect(),
+                    h: r.nodes
+                        .iter()
+                        .rev()
+                        .flat_map(|p| p.h.iter().copied())
+                        .collect(),
+                    cells: rev(&r.cells),
+                    kcells: rev(&r.kcells),
+                }
+            })
+            .collect::<Vec<_>>();
+        Table {
+            k: t.k,
+            sigma: t.sigma.clone(),
+            nu: t.nu.clone(),
+            ys: rows.iter().map(|r| r.y).collect(),
+            rows,
+        }
+    }
+}
+
+/// The binary form's first bytes.
+const MAGIC: &[u8; 8] = b"STKRT001";
+
+fn put(out: &mut Vec<u8>, v: f64) {
+    out.extend_from_slice(&v.to_le_bytes());
+}
+
+fn put_all(out: &mut Vec<u8>, v: &[f64]) {
+    put(out, v.len() as f64);
+    for &x in v {
+        put(out, x);
+    }
+}
+
+fn flags(v: &[bool]) -> Vec<f64> {
+    v.iter().map(|&b| f64::from(u8::from(b))).collect()
+}
+
+/// The binary form of `tables`: the magic, the count, each table's k, offset and length, then
+/// the tables.
+pub fn to_bytes(tables: &[TableData]) -> Vec<u8> {
+    let encoded: Vec<Vec<u8>> = tables
+        .iter()
+        .map(|t| {
+            let t = Table::from_data(t);
+            let mut out = Vec::new();
+            put(&mut out, t.k);
+            put_all(&mut out, &t.sigma);
+            put_all(&mut out, &t.nu);
+            put(&mut out, t.rows.len() as f64);
+            for r in &t.rows {
+                put(&mut out, r.y);
+                put(&mut out, r.x_s);
+                put_all(&mut out, &r.u);
+                put_all(&mut out, &r.h);
+                put_all(&mut out, &flags(&r.cells));
+                put_all(&mut out, &flags(&r.kcells));
+            }
+            out
+        })
+        .collect();
+    let mut out = MAGIC.to_vec();
+    put(&mut out, tables.len() as f64);
+    let mut offset = 16 + 24 * tables.len();
+    for (t, b) in tables.iter().zip(&encoded) {
+        put(&mut out, t.k);
+        put(&mut out, offset as f64);
+        put(&mut out, b.len() as f64);
+        offset += b.len();
+    }
+    for b in encoded {
+        out.extend_from_slice(&b);
+    }
+    out
+}
+
+struct Reader<'a> {
+    bytes: &'a [u8],
+    at: usize,
+}
+
+impl Reader<'_> {
+    fn f(&mut self) -> Option<f64> {
+        let b = self.bytes.get(self.at..self.at + 8)?;
+        self.at += 8;
+        Some(f64::from_le_bytes(b.try_into().ok()?))
+    }
+    fn n(&mut self) -> Option<usize> {
+        let v = self.f()?;
+        (v >= 0.0 && v.fract() == 0.0 && v < 1e9).then_some(v as usize)
+    }
+    fn all(&mut self) -> Option<Vec<f64>> {
+        let n = self.n()?;
+        if self.bytes.len() < self.at + 8 * n {
+            return None;
+        }
+        (0..n).map(|_| self.f()).collect()
+    }
+    fn flags(&mut self) -> Option<Vec<bool>> {
+        Some(self.all()?.into_iter().map(|v| v == 1.0).collect())
+    }
+}
+
+/// `(k, offset, length)` of each table of the binary form.
+pub fn index(bytes: &[u8]) -> Option<Vec<(f64, usize, usize)>> {
+    if bytes.get(..8)? != MAGIC {
+        return None;
+    }
+    let mut r = Reader { bytes, at: 8 };
+    let n = r.n()?;
+    (0..n).map(|_| Some((r.f()?, r.n()?, r.n()?))).collect()
+}
+
+/// Table `i` of the binary form.
+pub fn table_from_bytes(bytes: &[u8], i: usize) -> Option<Table> {
+    let (_, offset, len) = *index(bytes)?.get(i)?;
+    let mut r = Reader {
+        bytes: bytes.get(offset..offset + len)?,
+        at: 0,
+    };
+    let k = r.f()?;
+    let sigma = r.all()?;
+    let nu = r.all()?;
+    let n = r.n()?;
+    let mut rows = Vec::with_capacity(n);
+    for _ in 0..n {
+        rows.push(Row {
+            y: r.f()?,
+            x_s: r.f()?,
+            u: r.all()?,
+            h: r.all()?,
+            cells: r.flags()?,
+            kcells: r.flags()?,
+        });
+    }
+    Some(Table {
+        k,
+        sigma,
+        nu,
+        ys: rows.iter().map(|r| r.y).collect(),
+        rows,
+    })
+}

@@ -1,0 +1,377 @@
+//! Instant restitution: the rebound of a collision, V_out and e, from tables, in microseconds
+//! instead of the milliseconds of the ODE (Section 4).
+//!
+//! In the JKR units of `docs/model.md` a collision depends on (c_D, c_a, k) and on the impact
+//! speed in units of V_stick,JKR, so `w = V_out / V_stick` is one function of
+//! `(x = log10 c_D, y = log10(c_D c_a), k, V_in)` for every material, size and geometry. Along
+//! the impact speed it has two smooth pieces, which meet where V_out changes sign, at V_stick
+//! (from the master tables, [`crate::MasterTables`]):
+//! ```text
+//! bouncing    V_in >= V_stick:          sigma = ln(V_in / V_stick)                 in [0, 9.5]
+//! double      V_on < V_in <= V_stick:   nu = ln(V_stick / V_in) / ln(F / F_on)     in [0, 0.999]
+//! h = w |w|   (= 1 - e^(2 sigma) in the JKR limit, ~ -sigma^2 under strong damping)
+//! ```
+//! and below V_on every collision sticks (e = 0). The tables hold h at fixed channels of sigma
+//! and nu on nodes of rows of constant y (in u = ln(x_s - x), as the master tables) for every
+//! table k; an answer is the local cubic along the channels, along the row, across rows and
+//! across k. Each cell between two rows was checked at its centre against the ODE (e within
+//! 5e-5, half the 1e-4 promised), and each interval between tables of neighbouring k likewise;
+//! elsewhere (near the cliff, a double-collision window narrower than 1e-4 of V_stick, speeds
+//! beyond 9.5 e-folds above V_stick, within 1e-4 of the onset) the caller integrates the ODE.
+//!
+//! # Example
+//! ```
+//! use thresholds::restitution::collision;
+//! use thresholds::{Contact, CrackLaw, Geometry, Material, Outcome, SolverOptions, ThresholdMethod};
+//! let c = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+//! let law = CrackLaw::new(0.01)?;
+//! let table = ThresholdMethod::Table;
+//! // from the tables where they are built and vouch, else the ODE; `by` says which
+//! let (r, by) = collision(&c, &law, 1e-9, 0.045, &SolverOptions::default(), table)?;
+//! assert_eq!(r.outcome, Outcome::Bouncing); // Section 4: 4.5 cm/s bounces
+//! assert!(r.e > 0.0 && r.e < 1.0);
+//! # let _ = by;
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+pub mod build;
+pub mod format;
+
+use crate::master::interp::{interval, lagrange, local_cubic, stencil_start};
+use crate::master::{MasterTables, F_TOP};
+use contact::Contact;
+use dynamics::Outcome;
+use format::Table;
+use std::sync::OnceLock;
+
+/// The tables' binary form, made by the build script from `data/restitution_k*.csv`.
+static BYTES: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/restitution.bin"));
+
+/// Within this relative distance of V_double_onset (where the outcome jumps from sticking to a
+/// double collision) the ODE decides.
+pub const ONSET_MARGIN: f64 = 1e-4;
+
+/// A double-collision window narrower than this (relative, `ln(F/F_on)`: the JKR limit, where
+/// it is 4e-6 wide) is not tabulated; the ODE answers inside it.
+pub const MIN_WINDOW: f64 = 1e-4;
+
+/// Two k closer than this (relative) are the same k.
+const SAME_K: f64 = 1e-12;
+
+/// The rebound of one collision from the tables (SI).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TableRebound {
+    /// Sticking, double collision or bouncing.
+    pub outcome: Outcome,
+    /// V_out (m/s): the approach speed when the contact ends (< 0: bouncing; 0: sticking).
+    pub v_out: f64,
+    /// e = -V_out / V_in (dimensionless; < 0 for a double collision, 0 for sticking).
+    pub e: f64,
+}
+
+/// Which piece of the rebound.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Side {
+    Bouncing,
+    Double,
+}
+
+/// The restitution tables of every k (see the module documentation), read from the embedded
+/// binary form, each on first use.
+#[derive(Debug)]
+pub struct RestitutionTables {
+    bytes: &'static [u8],
+    k: Vec<f64>,
+    tables: Vec<OnceLock<Option<Table>>>,
+}
+
+impl RestitutionTables {
+    /// The committed tables (empty if the library was built without them: the ODE answers).
+    pub fn standard() -> &'static RestitutionTables {
+        static STANDARD: OnceLock<RestitutionTables> = OnceLock::new();
+        STANDARD.get_or_init(|| {
+            let index = format::index(BYTES).unwrap_or_default();
+            RestitutionTables {
+                bytes: BYTES,
+                k: index.iter().map(|e| e.0).collect(),
+                tables: index.iter().map(|_| OnceLock::new()).collect(),
+            }
+        })
+    }
+
+    /// Tables already in memory (the build's).
+    pub fn from_parts(tables: Vec<Table>) -> RestitutionTables {
+        RestitutionTables {
+            bytes: &[],
+            k: tables.iter().map(|t| t.k).collect(),
+            tables: tables
+                .into_iter()
+                .map(|t| {
+                    let c = OnceLock::new();
+                    let _ = c.set(Some(t));
+                    c
+                })
+                .collect(),
+        }
+    }
+
+    /// The k of the tables.
+    pub fn table_k(&self) -> &[f64] {
+        &self.k
+    }
+
+    /// Table `i`.
+    pub fn table(&self, i: usize) -> Option<&Table> {
+        self.tables
+            .get(i)?
+            .get_or_init(|| format::table_from_bytes(self.bytes, i))
+            .as_ref()
+    }
+
+    /// The rebound of `contact` at relaxation time `t_vis` (s) and impact speed `v_in` (m/s)
+    /// for the modulus ratio `k`; `None` where the tables do not vouch for it (the caller then
+    /// integrates the collision).
+    pub fn rebound(
+        &self,
+        contact: &Contact,
+        k: f64,
+        t_vis: f64,
+        v_in: f64,
+    ) -> Option<TableRebound> {
+        if !(t_vis > 0.0 && v_in > 0.0 && t_vis.is_finite() && v_in.is_finite()) {
+            return None;
+        }
+        let d = contact.dimensionless(t_vis);
+        if !(d.c_d > 0.0 && d.c_a > 0.0 && d.c_d.is_finite() && d.c_a.is_finite()) {
+            return None;
+        }
+        let x = d.c_d.log10();
+        let jkr = contact.v_stick_jkr();
+        let (outcome, w) = self.rebound_at(
+            x,
+            x + d.c_a.log10(),
+            k,
+            v_in / jkr,
+            MasterTables::standard(),
+        )?;
+        let v_out = w * jkr;
+        let e = if outcome == Outcome::Sticking {
+            0.0
+        } else {
+            -v_out / v_in
+        };
+        Some(TableRebound { outcome, v_out, e })
+    }
+
+    /// The outcome and V_out / V_stick,JKR at `(x, y, k)` and `s = V_in / V_stick,JKR`, with the
+    /// thresholds from `masters`.
+    pub fn rebound_at(
+        &self,
+        x: f64,
+        y: f64,
+        k: f64,
+        s: f64,
+        masters: &MasterTables,
+    ) -> Option<(Outcome, f64)> {
+        let r = masters.ratios_at(x, y, k, F_TOP * (1.0 - 1e-3))?;
+        let (f, f_on) = (r.v_stick?, r.v_double_onset?);
+        if s < f_on * (1.0 - ONSET_MARGIN) {
+            return Some((Outcome::Sticking, 0.0));
+        }
+        if s <= f_on * (1.0 + ONSET_MARGIN) {
+            return None;
+        }
+        let (side, coord) = if s > f {
+            (Side::Bouncing, (s / f).ln())
+        } else {
+            let window = (f / f_on).ln();
+            if window < MIN_WINDOW {
+                return None;
+            }
+            (Side::Double, (f / s).ln() / window)
+        };
+        let h = self.h(x, y, k, side, coord, true)?;
+        Some(match side {
+            Side::Bouncing => (Outcome::Bouncing, -(-h).max(0.0).sqrt() * f),
+            Side::Double => (Outcome::DoubleCollision, h.max(0.0).sqrt() * f),
+        })
+    }
+
+    /// h at `(x, y, k)` on `side` at channel coordinate `coord`, from the tables around k;
+    /// `checked`: only where the cells (and the k cells) were vouched for.
+    fn h(&self, x: f64, y: f64, k: f64, side: Side, coord: f64, checked: bool) -> Option<f64> {
+        let ks = &self.k;
+        if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
+            return table_h(self.table(i)?, x, y, side, coord, checked, false);
+        }
+        let n = ks.len();
+        if n < 4 || !(k > ks[0] && k < ks[n - 1]) {
+            return None;
+        }
+        let ln: Vec<f64> = ks.iter().map(|k| k.ln()).collect();
+        let i = interval(&ln, k.ln());
+        let s = stencil_start(i, n);
+        let mut h = [0.0; 4];
+        for (q, t) in (s..s + 4).enumerate() {
+            h[q] = table_h(
+                self.table(t)?,
+                x,
+                y,
+                side,
+                coord,
+                checked,
+                checked && t == i,
+            )?;
+        }
+        Some(lagrange(&ln[s..s + 4], &h, k.ln()))
+    }
+
+    /// h without the checks: for the build, which computes them.
+    pub fn h_unchecked(&self, x: f64, y: f64, k: f64, bouncing: bool, coord: f64) -> Option<f64> {
+        let side = if bouncing {
+            Side::Bouncing
+        } else {
+            Side::Double
+        };
+        self.h(x, y, k, side, coord, false)
+    }
+}
+
+/// h of node `node` of `row` at the channel coordinate (local cubic along the channels).
+fn node_h(t: &Table, row: &format::Row, node: usize, side: Side, coord: f64) -> Option<f64> {
+    let channels = t.sigma.len() + t.nu.len();
+    let (grid, offset) = match side {
+        Side::Bouncing => (&t.sigma, 0),
+        Side::Double => (&t.nu, t.sigma.len()),
+    };
+    if !(coord >= grid[0] && coord <= grid[grid.len() - 1]) {
+        return None;
+    }
+    let values = &row.h[node * channels + offset..node * channels + offset + grid.len()];
+    let s = stencil_start(interval(grid, coord), grid.len());
+    let e = (s + 4).min(grid.len());
+    let v = &values[s..e];
+    if v.iter().any(|h| !h.is_finite()) {
+        return None;
+    }
+    Some(lagrange(&grid[s..e], v, coord))
+}
+
+/// h of one table at `(x, y)`: four nodes around x on each of the four rows around y.
+fn table_h(
+    t: &Table,
+    x: f64,
+    y: f64,
+    side: Side,
+    coord: f64,
+    checked: bool,
+    k_checked: bool,
+) -> Option<f64> {
+    let n = t.rows.len();
+    if n < 4 || !(y >= t.ys[1] && y <= t.ys[n - 2]) {
+        return None;
+    }
+    let j = interval(&t.ys, y);
+    if checked {
+        // the cell of row j (to row j + 1) that holds x
+        let r = &t.rows[j];
+        let u = (r.x_s - x).ln().min(r.u[r.u.len() - 1]);
+        if u.is_nan() || u < r.u[0] {
+            return None;
+        }
+        let i = interval(&r.u, u);
+        if !r.cells.get(i).copied().unwrap_or(false)
+            || (k_checked && !r.kcells.get(i).copied().unwrap_or(false))
+        {
+            return None;
+        }
+    }
+    let s = stencil_start(j, n);
+    let mut across = [0.0; 4];
+    for (q, r) in t.rows[s..s + 4].iter().enumerate() {
+        let u = (r.x_s - x).ln().min(r.u[r.u.len() - 1]);
+        if u.is_nan() || u < r.u[0] || r.u.len() < 4 {
+            return None;
+        }
+        let a = stencil_start(interval(&r.u, u), r.u.len());
+        let mut along = [0.0; 4];
+        for (p, node) in (a..a + 4).enumerate() {
+            along[p] = node_h(t, r, node, side, coord)?;
+        }
+        across[q] = local_cubic(&r.u[a..a + 4], &along, u);
+    }
+    let h = lagrange(&t.ys[s..s + 4], &across, y);
+    h.is_finite().then_some(h)
+}
+
+/// Significant figures of h written: 8, far below what e = 1e-4 needs.
+const DIGITS: usize = 8;
+
+/// The text of one restitution table (see [`format`]).
+pub fn to_text(t: &format::TableData) -> String {
+    use numerics::format::number;
+    use std::fmt::Write as _;
+    let rounded = |v: f64| -> String {
+        if v.is_finite() {
+            number(format!("{:.*e}", DIGITS - 1, v).parse().unwrap_or(v))
+        } else {
+            "nan".into()
+        }
+    };
+    let list = |v: &[f64]| v.iter().map(|&x| number(x)).collect::<Vec<_>>().join(",");
+    let flags = |v: &[bool]| {
+        v.iter()
+            .map(|&b| if b { '1' } else { '0' })
+            .collect::<String>()
+    };
+    let mut out = String::new();
+    for h in &t.header {
+        let _ = writeln!(out, "# {h}");
+    }
+    let _ = writeln!(out, "k,{}", number(t.k));
+    let _ = writeln!(out, "sigma,{}", list(&t.sigma));
+    let _ = writeln!(out, "nu,{}", list(&t.nu));
+    for r in &t.rows {
+        let _ = writeln!(out, "row,{},{}", number(r.y), number(r.x_s));
+        for p in &r.nodes {
+            let h: Vec<String> = p.h.iter().map(|&v| rounded(v)).collect();
+            let _ = writeln!(
+                out,
+                "rnode,{},{},{},{}",
+                number(p.x),
+                rounded(p.f),
+                rounded(p.f_on),
+                h.join(",")
+            );
+        }
+        let _ = writeln!(out, "cells,{}", flags(&r.cells));
+        if !r.kcells.is_empty() {
+            let _ = writeln!(out, "kcells,{}", flags(&r.kcells));
+        }
+    }
+    out
+}
+
+/// One collision of `contact` at `t_vis` (s) and `v_in` (m/s) with the crack law `law`: from
+/// the restitution tables with [`crate::ThresholdMethod::Table`] where they vouch for it (and
+/// no trajectory or `decide_after` is asked of `solver`: those need the integration), else
+/// integrated with `solver`; and which answered. A table answer has the outcome, e and V_out
+/// only ([`dynamics::Collision::from_rebound`]).
+pub fn collision(
+    contact: &Contact,
+    law: &greenwood::CrackLaw,
+    t_vis: f64,
+    v_in: f64,
+    solver: &dynamics::SolverOptions,
+    method: crate::ThresholdMethod,
+) -> Result<(dynamics::Collision, crate::ThresholdMethod), crate::ThresholdsError> {
+    let plain = !solver.record_trajectory && solver.decide_after == 0.0;
+    if method == crate::ThresholdMethod::Table && plain {
+        if let Some(r) = RestitutionTables::standard().rebound(contact, law.k(), t_vis, v_in) {
+            let c = dynamics::Collision::from_rebound(r.outcome, r.e, r.v_out);
+            return Ok((c, crate::ThresholdMethod::Table));
+        }
+    }
+    let collider = dynamics::Collider::new(*contact, law, t_vis)?.with_options(*solver)?;
+    Ok((collider.collide(v_in)?, crate::ThresholdMethod::Search))
+}

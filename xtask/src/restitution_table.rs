@@ -1,0 +1,122 @@
+//! `cargo xtask restitution-table [--check]`: build the restitution tables (V_out and e of
+//! single collisions over the dimensionless numbers, k and the impact speed) from the ODE and
+//! write them to `crates/thresholds/data/restitution_k<k>.csv`, or recompute a sample of their
+//! values and fail if the model no longer gives them. They stand on the committed master
+//! tables (V_stick and V_double_onset at every node), so build those first.
+
+use crate::figures::Error;
+use crate::master_table::{committed_ends, data_dir};
+use numerics::format::number;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+use thresholds::restitution::build::{build_table, k_cells, BuildConfig};
+use thresholds::restitution::format::{parse, TableData};
+use thresholds::restitution::to_text;
+use thresholds::{CrackLaw, MasterTables};
+
+/// `--check` recomputes every this-many-th channel value (about 100 of each table's 40 000).
+pub const CHECK_EVERY: usize = 397;
+
+/// A recomputed value must equal the committed one to this (the file keeps 8 significant
+/// figures; a collision is deterministic).
+pub const CHECK_TOL: f64 = 1e-7;
+
+/// The file of the table of `k`.
+pub fn table_path(root: &Path, k: f64) -> PathBuf {
+    data_dir(root).join(format!("restitution_k{k:.5}.csv"))
+}
+
+/// The committed restitution tables, in increasing k.
+pub fn committed(root: &Path) -> Result<Vec<TableData>, Error> {
+    MasterTables::standard()
+        .table_k()
+        .iter()
+        .map(|&k| {
+            let path = table_path(root, k);
+            let text =
+                std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+            parse(&text)
+                .map_err(|e| format!("{}, line {}: {}", path.display(), e.line, e.problem).into())
+        })
+        .collect()
+}
+
+/// Builds every table (or `only` these indices) and their k cells, and writes them.
+pub fn run_build(root: &Path, only: &[usize]) -> Result<(), Error> {
+    let start = Instant::now();
+    let cfg = BuildConfig::standard();
+    let ends = committed_ends(root)?;
+    let masters = MasterTables::standard();
+    let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
+    let n = masters.table_k().len();
+    if n == 0 {
+        return Err(
+            "the master tables are not embedded: build them first (cargo xtask master-table)"
+                .into(),
+        );
+    }
+    for i in 0..n {
+        if !only.is_empty() && !only.contains(&i) {
+            continue;
+        }
+        let t = build_table(&cfg, i, &ends, masters, &progress)?;
+        std::fs::write(table_path(root, t.k), to_text(&t))?;
+        progress(&format!("wrote {}", table_path(root, t.k).display()));
+    }
+    if only.is_empty() {
+        let mut tables = committed(root)?;
+        k_cells(&cfg, &mut tables, masters, &progress)?;
+        for t in &tables {
+            std::fs::write(table_path(root, t.k), to_text(t))?;
+        }
+        progress("wrote the k cells");
+    }
+    Ok(())
+}
+
+/// Recomputes a sample of the committed values; an error naming the first that moved.
+pub fn run_check(root: &Path) -> Result<(), Error> {
+    let cfg = BuildConfig::standard();
+    for t in committed(root)? {
+        let law = CrackLaw::new(t.k)?;
+        let mut checked = 0;
+        let channels = cfg.sigma.len() + cfg.nu.len();
+        let all = t
+            .rows
+            .iter()
+            .flat_map(|r| r.nodes.iter().map(move |p| (r.y, p)));
+        for (n, (y, p)) in all.enumerate() {
+            if !p.f.is_finite() {
+                continue;
+            }
+            let c = n * 7 % channels;
+            if n % (CHECK_EVERY / channels).max(1) != 0 || !p.h[c].is_finite() {
+                continue;
+            }
+            let bouncing = c < cfg.sigma.len();
+            let q = if bouncing {
+                cfg.sigma[c]
+            } else {
+                cfg.nu[c - cfg.sigma.len()]
+            };
+            let now = thresholds::restitution::build::node_channel(
+                &cfg, &law, p.x, y, p.f, p.f_on, bouncing, q,
+            );
+            let within = (now - p.h[c]).abs() <= CHECK_TOL * p.h[c].abs().max(1e-6);
+            if !within {
+                return Err(format!(
+                    "the restitution table of k = {} is stale: h at x = {}, y = {y}, {} = {q} is {}, the model now gives {now}; run `cargo xtask restitution-table`",
+                    t.k, p.x, if bouncing { "sigma" } else { "nu" }, p.h[c]
+                )
+                .into());
+            }
+            checked += 1;
+        }
+        eprintln!(
+            "restitution-table --check: k = {}: {checked} values recomputed, all within {}",
+            number(t.k),
+            number(CHECK_TOL)
+        );
+    }
+    Ok(())
+}
