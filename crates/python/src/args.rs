@@ -1,8 +1,8 @@
-//! The conversions shared by the vectorised functions of `stickiness._core`: flat `float64`
-//! arrays of one length in (the package broadcasts them), the bodies of each element, one crack
-//! law per k, the warnings as `(index, kind, message)`, and a dict of flat arrays out (NaN where
-//! a value does not exist). The settings are those of the CLI, so the numbers are bit-identical
-//! to its `--json` output.
+//! The conversions shared by the vectorised functions of `stickiness._core`, written once:
+//! flat `float64` arrays of one length in (the package broadcasts them), the material, bodies
+//! and crack law of each element ([`Elements`]), the warnings as `(index, kind, message)`, and
+//! a dict of flat arrays out (NaN where a value does not exist). The settings are those of the
+//! CLI, so the numbers are bit-identical to its `--json` output.
 
 use crate::error::Error;
 use crate::material::Material;
@@ -35,33 +35,62 @@ pub fn common_len(lens: &[(&str, usize)]) -> PyResult<usize> {
     }
 }
 
-/// The geometry arguments: `radius`, optional `radius2`, `wall`.
-pub struct Bodies<'a> {
+/// What every elementwise function takes: the material (with `gamma_sv` per element, if
+/// given), the bodies (`radius`, optional `radius2`, `wall`), k, and its own arrays, all of one
+/// length (the package broadcasts them): checked once here, then element `i`'s contact and
+/// crack law.
+pub struct Elements<'a> {
+    material: &'a Material,
+    gamma_sv: Option<&'a [f64]>,
     /// R1 of each element (m).
     pub radius: &'a [f64],
     radius2: Option<&'a [f64]>,
     wall: bool,
+    /// k of each element (empty where the function takes none).
+    pub k: &'a [f64],
+    laws: Laws,
+    /// The common length.
+    pub n: usize,
 }
 
-impl<'a> Bodies<'a> {
-    /// The geometry arguments, `radius2` (if given) as long as `radius`.
+impl<'a> Elements<'a> {
+    /// The elements of a call; `own` are the function's other arrays, by name, for the length
+    /// check.
+    #[allow(clippy::too_many_arguments)]
     pub fn new(
+        material: &'a Material,
+        gamma_sv: Option<&'a Array<'_>>,
         radius: &'a Array<'_>,
         radius2: Option<&'a Array<'_>>,
         wall: bool,
+        k: Option<&'a Array<'_>>,
+        own: &[(&str, &'a [f64])],
     ) -> PyResult<Self> {
         let radius = data(radius, "radius")?;
         let radius2 = radius2.map(|r| data(r, "radius2")).transpose()?;
-        if let Some(r2) = radius2 {
-            common_len(&[("radius", radius.len()), ("radius2", r2.len())])?;
+        let gamma_sv = gamma_sv.map(|g| data(g, "gamma_sv")).transpose()?;
+        let k = k.map(|k| data(k, "k")).transpose()?.unwrap_or(&[]);
+        let mut lens = vec![("radius", radius.len())];
+        lens.extend(radius2.map(|r| ("radius2", r.len())));
+        lens.extend(gamma_sv.map(|g| ("gamma_sv", g.len())));
+        if !k.is_empty() {
+            lens.push(("k", k.len()));
         }
+        lens.extend(own.iter().map(|(name, a)| (*name, a.len())));
+        let n = common_len(&lens)?;
         Ok(Self {
+            material,
+            gamma_sv,
             radius,
             radius2,
             wall,
+            k,
+            laws: Laws::new(k),
+            n,
         })
     }
 
+    /// The geometry of element `i`.
     pub fn geometry(&self, i: usize) -> Geometry {
         let r1 = self.radius[i];
         match (self.wall, self.radius2) {
@@ -71,8 +100,18 @@ impl<'a> Bodies<'a> {
         }
     }
 
-    pub fn contact(&self, material: &Material, i: usize) -> Result<Contact, Error> {
-        Contact::new(material.inner, self.geometry(i)).map_err(|e| Error::from_contact(e, i))
+    /// The contact of element `i` (its gamma_sv, if given per element).
+    pub fn contact(&self, i: usize) -> Result<Contact, Error> {
+        let mut m = self.material.inner;
+        if let Some(g) = self.gamma_sv {
+            m.gamma_sv = g[i];
+        }
+        Contact::new(m, self.geometry(i)).map_err(|e| Error::from_contact(e, i))
+    }
+
+    /// The crack law of element `i`'s k.
+    pub fn law(&self, i: usize) -> Result<&CrackLaw, Error> {
+        self.laws.get(self.k[i], i)
     }
 }
 
@@ -173,16 +212,28 @@ pub fn or_nan(v: Option<f64>) -> f64 {
     v.unwrap_or(f64::NAN)
 }
 
+/// `method` by name: `"table"` or `"search"` (any case).
+pub fn method(name: &str) -> PyResult<ThresholdMethod> {
+    ThresholdMethod::from_name(name).ok_or_else(|| {
+        PyValueError::new_err(format!("method = '{name}': must be 'table' or 'search'"))
+    })
+}
+
+/// The code of a method in a `"method"` column (0: search, 1: table).
+pub fn method_code(m: ThresholdMethod) -> u8 {
+    match m {
+        ThresholdMethod::Search => 0,
+        ThresholdMethod::Table => 1,
+    }
+}
+
 /// The search settings of a call, as the CLI's: only `rel_tol`, `v_max` and `method`
-/// (`"search"` or `"table"`) differ from the defaults.
-pub fn search_options(v_max: Option<f64>, rel_tol: f64, method: &str) -> PyResult<SearchOptions> {
-    let method = ThresholdMethod::from_name(method).ok_or_else(|| {
-        PyValueError::new_err(format!("method = '{method}': must be 'search' or 'table'"))
-    })?;
+/// (`"table"` or `"search"`) differ from the defaults.
+pub fn search_options(v_max: Option<f64>, rel_tol: f64, name: &str) -> PyResult<SearchOptions> {
     Ok(SearchOptions {
         rel_tol,
         v_max,
-        method,
+        method: method(name)?,
         ..SearchOptions::default()
     })
 }

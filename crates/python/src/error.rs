@@ -5,6 +5,7 @@
 
 use pyo3::create_exception;
 use pyo3::exceptions::{PyFileNotFoundError, PyRuntimeError, PyValueError};
+use pyo3::prelude::PyAnyMethods;
 use pyo3::PyErr;
 use thresholds::{ContactError, DynamicsError, OutOfRange, ThresholdsError};
 
@@ -19,7 +20,7 @@ create_exception!(
     stickiness._core,
     _InputError,
     PyValueError,
-    "Bad input at one element (internal): args are (argument, flat index into the broadcast arrays, the message after the argument's name). The package re-raises it as ValueError naming the argument's own index."
+    "Bad input at one element: a ValueError whose message names the argument and its range. Its attributes `field` (the argument), `index` (the flat index into the broadcast arrays) and `rest` (the message after the argument's name) let the package name the argument's own index."
 );
 
 /// A failure on its way to Python.
@@ -66,10 +67,15 @@ impl Error {
 impl From<Error> for PyErr {
     fn from(e: Error) -> PyErr {
         match e {
-            Error::Input { bad, index } => {
-                let rest = bad.message_for("");
-                _InputError::new_err((bad.field, index, rest))
-            }
+            Error::Input { bad, index } => pyo3::Python::attach(|py| {
+                let err = _InputError::new_err(bad.to_string());
+                let value = err.value(py);
+                // (the message alone still names the argument if an attribute cannot be set)
+                let _ = value.setattr("field", bad.field);
+                let _ = value.setattr("index", index);
+                let _ = value.setattr("rest", bad.message_for(""));
+                err
+            }),
             Error::Solver(m) => SolverError::new_err(m),
             Error::FileNotFound(m) => PyFileNotFoundError::new_err(m),
             Error::Value(m) => PyValueError::new_err(m),

@@ -1,7 +1,9 @@
 //! The vectorised functions of `stickiness._core` that are no threshold search: the crack law,
 //! the JKR contact, single collisions and the size laws (the conversions: [`crate::args`]).
 
-use crate::args::{columns, common_len, data, or_nan, warned, Array, Bodies, Laws, Warned};
+use crate::args::{
+    columns, common_len, data, method, method_code, or_nan, warned, Array, Elements, Laws, Warned,
+};
 use crate::error::Error;
 use crate::material::Material;
 use crate::parallel;
@@ -9,7 +11,9 @@ use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use thresholds::{Collider, GreenwoodError, SolverOptions, StickingCriterion, TVisLaw, Warning};
+use thresholds::{
+    GreenwoodError, SolverOptions, StickingCriterion, TVisLaw, ThresholdMethod, Warning,
+};
 
 /// Greenwood's crack speed v(k, beta), elementwise (dimensionless).
 #[pyfunction]
@@ -40,10 +44,9 @@ pub fn jkr<'py>(
     radius2: Option<Array<'py>>,
     wall: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
-    let n = bodies.radius.len();
-    let rows = parallel::map(py, n, |i| {
-        let c = bodies.contact(&material, i)?;
+    let e = Elements::new(&material, None, &radius, radius2.as_ref(), wall, None, &[])?;
+    let rows = parallel::map(py, e.n, |i| {
+        let c = e.contact(i)?;
         Ok((c.jkr_values(), warned(i, c.warnings())))
     })?;
     columns(py, thresholds::JKR_QUANTITIES.map(|q| q.0), &rows)
@@ -52,7 +55,7 @@ pub fn jkr<'py>(
 /// The two dimensionless numbers of a collision (`Contact::dimensionless`): the drag number
 /// c_d and the crack-speed number c_a, and the JKR time unit t0 (s).
 #[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, t_vis))]
+#[pyo3(signature = (material, radius, radius2, wall, t_vis, gamma_sv=None))]
 pub fn dimensionless<'py>(
     py: Python<'py>,
     material: Material,
@@ -60,12 +63,20 @@ pub fn dimensionless<'py>(
     radius2: Option<Array<'py>>,
     wall: bool,
     t_vis: Array<'py>,
+    gamma_sv: Option<Array<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
     let t_vis = data(&t_vis, "t_vis")?;
-    let n = common_len(&[("radius", bodies.radius.len()), ("t_vis", t_vis.len())])?;
-    let rows = parallel::map(py, n, |i| {
-        let c = bodies.contact(&material, i)?;
+    let e = Elements::new(
+        &material,
+        gamma_sv.as_ref(),
+        &radius,
+        radius2.as_ref(),
+        wall,
+        None,
+        &[("t_vis", t_vis)],
+    )?;
+    let rows = parallel::map(py, e.n, |i| {
+        let c = e.contact(i)?;
         numerics::positive("t_vis", t_vis[i], "s").map_err(|bad| Error::Input { bad, index: i })?;
         let d = c.dimensionless(t_vis[i]);
         Ok(([d.c_d, d.c_a, c.t0()], warned(i, c.warnings())))
@@ -74,9 +85,10 @@ pub fn dimensionless<'py>(
 }
 
 /// One head-on collision per element: outcome, e, v_out (m/s), contact_time (s; NaN for
-/// sticking), v_stick_jkr (m/s); with `trajectory` (one element only) the recorded states.
+/// sticking, and where the restitution tables answered), v_stick_jkr (m/s), method (0: the ODE,
+/// 1: the tables); with `trajectory` (one element only, always the ODE) the recorded states.
 #[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, t_vis, v_in, k, t_end, trajectory))]
+#[pyo3(signature = (material, radius, radius2, wall, t_vis, v_in, k, t_end, trajectory, method="search", gamma_sv=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn collide<'py>(
     py: Python<'py>,
@@ -89,44 +101,44 @@ pub fn collide<'py>(
     k: Array<'py>,
     t_end: Option<f64>,
     trajectory: bool,
+    method: &str,
+    gamma_sv: Option<Array<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
-    let (t_vis, v_in, k) = (data(&t_vis, "t_vis")?, data(&v_in, "v_in")?, data(&k, "k")?);
-    let n = common_len(&[
-        ("radius", bodies.radius.len()),
-        ("t_vis", t_vis.len()),
-        ("v_in", v_in.len()),
-        ("k", k.len()),
-    ])?;
-    if trajectory && n != 1 {
+    let (t_vis, v_in) = (data(&t_vis, "t_vis")?, data(&v_in, "v_in")?);
+    let e = Elements::new(
+        &material,
+        gamma_sv.as_ref(),
+        &radius,
+        radius2.as_ref(),
+        wall,
+        Some(&k),
+        &[("t_vis", t_vis), ("v_in", v_in)],
+    )?;
+    if trajectory && e.n != 1 {
         return Err(PyValueError::new_err(
             "trajectory: only for one collision (scalar arguments)",
         ));
     }
-    let laws = Laws::new(k);
+    let method = self::method(method)?;
     let opts = SolverOptions {
         record_trajectory: trajectory,
         decide_after: t_end.unwrap_or(0.0),
         ..SolverOptions::default()
     };
-    let runs = parallel::map(py, n, |i| {
-        let c = bodies.contact(&material, i)?;
-        let law = laws.get(k[i], i)?;
-        let fail = |e: thresholds::DynamicsError| Error::from_thresholds(e.into(), i);
-        let collider = Collider::new(c, law, t_vis[i])
-            .and_then(|col| col.with_options(opts))
-            .map_err(fail)?;
-        let run = collider.collide(v_in[i]).map_err(fail)?;
+    let runs = parallel::map(py, e.n, |i| {
+        let c = e.contact(i)?;
         let mut w = warned(i, c.warnings());
         w.extend(warned(i, Warning::for_speed("v_in", v_in[i])));
-        Ok((run, c.v_stick_jkr(), w))
+        let (run, answered) =
+            thresholds::restitution::collision(&c, e.law(i)?, t_vis[i], v_in[i], &opts, method)
+                .map_err(|err| Error::from_thresholds(err, i))?;
+        Ok((run, c.v_stick_jkr(), w, answered))
     })?;
     let dict = PyDict::new(py);
     let outcomes: Vec<&str> = runs.iter().map(|r| r.0.outcome.as_str()).collect();
     dict.set_item("outcome", outcomes)?;
-    let column = |f: &dyn Fn(&(thresholds::Collision, f64, Warned)) -> f64| -> Vec<f64> {
-        runs.iter().map(f).collect()
-    };
+    type Run = (thresholds::Collision, f64, Warned, ThresholdMethod);
+    let column = |f: &dyn Fn(&Run) -> f64| -> Vec<f64> { runs.iter().map(f).collect() };
     dict.set_item("e", PyArray1::from_vec(py, column(&|r| r.0.e)))?;
     // what an experiment sees: e = 0 for sticking and double collisions (Section 4.4)
     dict.set_item(
@@ -139,6 +151,8 @@ pub fn collide<'py>(
         PyArray1::from_vec(py, column(&|r| or_nan(r.0.contact_time))),
     )?;
     dict.set_item("v_stick_jkr", PyArray1::from_vec(py, column(&|r| r.1)))?;
+    let methods: Vec<u8> = runs.iter().map(|r| method_code(r.3)).collect();
+    dict.set_item("method", PyArray1::from_vec(py, methods))?;
     let sticking: Vec<Option<&str>> = runs
         .iter()
         .map(|r| {

@@ -3,6 +3,7 @@
 use crate::error::Error;
 use pyo3::prelude::*;
 use rayon::prelude::*;
+use std::time::{Duration, Instant};
 
 /// Elements per thread in one chunk. Between chunks the GIL is taken back to check for Ctrl-C:
 /// 4 elements a thread is about 20 ms for V_stick searches and well under a second for T_vis
@@ -14,40 +15,63 @@ pub fn batch() -> usize {
     (rayon::current_num_threads() * ELEMENTS_PER_THREAD).max(1)
 }
 
-/// A chunk that took less than this grows fourfold for the next: elements from the master table
-/// take microseconds, and a chunk of 8 of them would spend its time in taking the GIL back and
-/// in rayon's start (1e6 elements: seconds); chunks of searches stay small, so Ctrl-C still
-/// stops them within about a second.
-const QUICK_CHUNK: std::time::Duration = std::time::Duration::from_millis(20);
+/// The elements are first computed one after the other on the calling thread for up to this
+/// long: answers from the master tables take a microsecond, and an array of a few hundred of
+/// them is done before the thread pool would have started (64 elements: 50 us instead of
+/// 140 us). The first slow element (a search: milliseconds) ends this start.
+const SEQUENTIAL_START: Duration = Duration::from_micros(500);
 
-/// `f(0), ..., f(n - 1)` on all cores with the GIL released, in chunks with a check for signals
-/// (Ctrl-C raises `KeyboardInterrupt`) after each; the first error in index order is returned.
-/// Chunks start at [`batch`] elements and grow while they are quick ([`QUICK_CHUNK`]).
+/// After the start, a chunk holds about this much work on every core (from the rate measured
+/// so far), so that Ctrl-C is checked every few tens of milliseconds whatever an element costs.
+const CHUNK_TIME: Duration = Duration::from_millis(20);
+
+/// The most elements in one chunk.
+const MAX_CHUNK: usize = 1 << 20;
+
+/// `f(0), ..., f(n - 1)` with the GIL released: first one after the other for up to
+/// [`SEQUENTIAL_START`], then the rest on all cores in chunks with a check for signals (Ctrl-C
+/// raises `KeyboardInterrupt`) after each; the first error in index order is returned.
 pub fn map<T, F>(py: Python<'_>, n: usize, f: F) -> PyResult<Vec<T>>
 where
     T: Send,
     F: Fn(usize) -> Result<T, Error> + Sync + Send,
 {
-    let mut chunk = batch();
     let mut out = Vec::with_capacity(n);
-    let mut start = 0;
+    let began = Instant::now();
+    let first: Vec<Result<T, Error>> = py.detach(|| {
+        let mut done = Vec::new();
+        while done.len() < n && began.elapsed() < SEQUENTIAL_START {
+            let r = f(done.len());
+            let failed = r.is_err();
+            done.push(r);
+            if failed {
+                break;
+            }
+        }
+        done
+    });
+    let mut start = first.len();
+    for r in first {
+        out.push(r?);
+    }
+    py.check_signals()?;
+    let threads = rayon::current_num_threads().max(1);
+    // elements a thread computes in CHUNK_TIME at the rate seen so far
+    let per_element = began.elapsed().as_secs_f64() / start.max(1) as f64;
+    let mut chunk = ((CHUNK_TIME.as_secs_f64() / per_element.max(1e-9)) as usize * threads)
+        .clamp(batch(), MAX_CHUNK);
     while start < n {
         let end = (start + chunk).min(n);
-        let began = std::time::Instant::now();
-        let part: Vec<Result<T, Error>> = py.detach(|| {
-            if end - start == 1 {
-                vec![f(start)]
-            } else {
-                (start..end).into_par_iter().map(&f).collect()
-            }
-        });
+        let t = Instant::now();
+        let part: Vec<Result<T, Error>> =
+            py.detach(|| (start..end).into_par_iter().map(&f).collect());
         for r in part {
             out.push(r?);
         }
         py.check_signals()?;
-        if began.elapsed() < QUICK_CHUNK {
-            chunk = chunk.saturating_mul(4);
-        }
+        let per_element = t.elapsed().as_secs_f64() / (end - start) as f64 * threads as f64;
+        chunk = ((CHUNK_TIME.as_secs_f64() / per_element.max(1e-9)) as usize * threads)
+            .clamp(batch(), MAX_CHUNK);
         start = end;
     }
     Ok(out)

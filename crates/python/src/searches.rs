@@ -1,8 +1,8 @@
 //! The vectorised threshold functions of `stickiness._core`: V_stick, V_frag and the T_vis fit,
-//! each element answered by the exact search or the master table (`method`), with a `"method"`
-//! column saying which answered (0: search, 1: table).
+//! each element answered by the master tables or the exact search (`method`), with a
+//! `"method"` column saying which answered (0: search, 1: table).
 
-use crate::args::{common_len, data, or_nan, search_options, warned, Array, Bodies, Laws, Warned};
+use crate::args::{method_code, or_nan, search_options, warned, Array, Elements, Warned};
 use crate::error::Error;
 use crate::material::Material;
 use crate::parallel;
@@ -11,35 +11,22 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use thresholds::{Contact, CrackLaw, FitWarning, ThresholdMethod, ThresholdsError};
 
-/// The code of a method in the `"method"` column.
-fn code(m: ThresholdMethod) -> u8 {
-    match m {
-        ThresholdMethod::Search => 0,
-        ThresholdMethod::Table => 1,
-    }
-}
-
 /// What one element gives: its values (in the order of the call's names), the method that
 /// answered, and its warnings.
 type Answer<const N: usize> = ([f64; N], ThresholdMethod, Warned);
 
-/// The `n` elements of a threshold function: element `i` is `f(i, contact, law)` for the
-/// contact of `material` and the bodies at `i`, and the crack law of `k[i]`; a dict of the
+/// The elements of a threshold function: element `i` is `f(i, contact, law)`; a dict of the
 /// columns `names`, `"method"` and `"warnings"`.
 fn per_element<'py, const N: usize>(
     py: Python<'py>,
-    material: &Material,
-    bodies: &Bodies<'_>,
-    k: &[f64],
-    n: usize,
+    e: &Elements<'_>,
     names: [&str; N],
     f: impl Fn(usize, &Contact, &CrackLaw) -> Result<Answer<N>, ThresholdsError> + Sync + Send,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let laws = Laws::new(k);
-    let rows = parallel::map(py, n, |i| {
-        let c = bodies.contact(material, i)?;
-        let law = laws.get(k[i], i)?;
-        let (values, method, mut w) = f(i, &c, law).map_err(|e| Error::from_thresholds(e, i))?;
+    let rows = parallel::map(py, e.n, |i| {
+        let c = e.contact(i)?;
+        let (values, method, mut w) =
+            f(i, &c, e.law(i)?).map_err(|err| Error::from_thresholds(err, i))?;
         let mut all = warned(i, c.warnings());
         all.append(&mut w);
         Ok((values, method, all))
@@ -49,16 +36,17 @@ fn per_element<'py, const N: usize>(
         let col: Vec<f64> = rows.iter().map(|r| r.0[j]).collect();
         dict.set_item(*name, PyArray1::from_vec(py, col))?;
     }
-    let methods: Vec<u8> = rows.iter().map(|r| code(r.1)).collect();
+    let methods: Vec<u8> = rows.iter().map(|r| method_code(r.1)).collect();
     dict.set_item("method", PyArray1::from_vec(py, methods))?;
     let warnings: Warned = rows.into_iter().flat_map(|r| r.2).collect();
     dict.set_item("warnings", warnings)?;
     Ok(dict)
 }
 
-/// V_stick, V_double_onset, V_stick,JKR, no_bouncing_below and v_max (m/s; NaN where none).
+/// V_stick, V_double_onset, V_stick,JKR, no_bouncing_below and v_max (m/s; NaN where none);
+/// `gamma_sv` (J/m^2), if given, replaces the material's per element.
 #[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, t_vis, k, v_max, rel_tol, method))]
+#[pyo3(signature = (material, radius, radius2, wall, t_vis, k, v_max, rel_tol, method, gamma_sv=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn v_stick<'py>(
     py: Python<'py>,
@@ -71,15 +59,18 @@ pub fn v_stick<'py>(
     v_max: Option<f64>,
     rel_tol: f64,
     method: &str,
+    gamma_sv: Option<Array<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
-    let (t_vis, k) = (data(&t_vis, "t_vis")?, data(&k, "k")?);
-    let lens = [
-        ("radius", bodies.radius.len()),
-        ("t_vis", t_vis.len()),
-        ("k", k.len()),
-    ];
-    let n = common_len(&lens)?;
+    let t_vis = crate::args::data(&t_vis, "t_vis")?;
+    let e = Elements::new(
+        &material,
+        gamma_sv.as_ref(),
+        &radius,
+        radius2.as_ref(),
+        wall,
+        Some(&k),
+        &[("t_vis", t_vis)],
+    )?;
     let opts = search_options(v_max, rel_tol, method)?;
     let names = [
         "v_stick",
@@ -88,7 +79,7 @@ pub fn v_stick<'py>(
         "no_bouncing_below",
         "v_max",
     ];
-    per_element(py, &material, &bodies, k, n, names, |i, c, law| {
+    per_element(py, &e, names, |i, c, law| {
         let th = thresholds::sticking_thresholds(c, law, t_vis[i], &opts)?;
         let values = [
             or_nan(th.v_stick),
@@ -103,7 +94,7 @@ pub fn v_stick<'py>(
 
 /// V_frag = 10 V_stick with V_stick, T_vis, V_frag,JKR, V_stick,JKR, no_bouncing_below.
 #[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, t_vis, k, v_max, rel_tol, method))]
+#[pyo3(signature = (material, radius, radius2, wall, t_vis, k, v_max, rel_tol, method, gamma_sv=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn v_frag<'py>(
     py: Python<'py>,
@@ -116,15 +107,18 @@ pub fn v_frag<'py>(
     v_max: Option<f64>,
     rel_tol: f64,
     method: &str,
+    gamma_sv: Option<Array<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
-    let (t_vis, k) = (data(&t_vis, "t_vis")?, data(&k, "k")?);
-    let lens = [
-        ("radius", bodies.radius.len()),
-        ("t_vis", t_vis.len()),
-        ("k", k.len()),
-    ];
-    let n = common_len(&lens)?;
+    let t_vis = crate::args::data(&t_vis, "t_vis")?;
+    let e = Elements::new(
+        &material,
+        gamma_sv.as_ref(),
+        &radius,
+        radius2.as_ref(),
+        wall,
+        Some(&k),
+        &[("t_vis", t_vis)],
+    )?;
     let opts = search_options(v_max, rel_tol, method)?;
     let names = [
         "v_frag",
@@ -134,7 +128,7 @@ pub fn v_frag<'py>(
         "v_stick_jkr",
         "no_bouncing_below",
     ];
-    per_element(py, &material, &bodies, k, n, names, |i, c, law| {
+    per_element(py, &e, names, |i, c, law| {
         let f = thresholds::fragmentation(c, law, t_vis[i], &opts)?;
         let values = [
             or_nan(f.v_frag),
@@ -150,7 +144,7 @@ pub fn v_frag<'py>(
 
 /// T_vis (s) reproducing a measured V_stick, with the range for its uncertainty.
 #[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, v_stick, v_stick_err, k, v_max, rel_tol, method))]
+#[pyo3(signature = (material, radius, radius2, wall, v_stick, v_stick_err, k, v_max, rel_tol, method, gamma_sv=None))]
 #[allow(clippy::too_many_arguments)]
 pub fn fit_t_vis<'py>(
     py: Python<'py>,
@@ -164,23 +158,24 @@ pub fn fit_t_vis<'py>(
     v_max: Option<f64>,
     rel_tol: f64,
     method: &str,
+    gamma_sv: Option<Array<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let bodies = Bodies::new(&radius, radius2.as_ref(), wall)?;
-    let (v, dv, k) = (
-        data(&v_stick, "v_stick")?,
-        data(&v_stick_err, "v_stick_err")?,
-        data(&k, "k")?,
+    let (v, dv) = (
+        crate::args::data(&v_stick, "v_stick")?,
+        crate::args::data(&v_stick_err, "v_stick_err")?,
     );
-    let lens = [
-        ("radius", bodies.radius.len()),
-        ("v_stick", v.len()),
-        ("v_stick_err", dv.len()),
-        ("k", k.len()),
-    ];
-    let n = common_len(&lens)?;
+    let e = Elements::new(
+        &material,
+        gamma_sv.as_ref(),
+        &radius,
+        radius2.as_ref(),
+        wall,
+        Some(&k),
+        &[("v_stick", v), ("v_stick_err", dv)],
+    )?;
     let opts = search_options(v_max, rel_tol, method)?;
     let names = ["t_vis", "t_vis_min", "t_vis_max", "v_stick_jkr"];
-    per_element(py, &material, &bodies, k, n, names, |i, c, law| {
+    per_element(py, &e, names, |i, c, law| {
         let fit = thresholds::fit_t_vis(c, law, v[i], dv[i], &opts)?;
         let w = fit
             .warnings()

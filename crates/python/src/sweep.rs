@@ -17,7 +17,7 @@ use thresholds::{OutOfRange, TVisLaw};
 /// then each of `thresholds::sweep::COLUMNS` (NaN where a number does not exist, `radius2` on
 /// a wall; `warnings` joined by "; "), and `n_chunks`, the grid's number of chunks.
 #[pyfunction]
-#[pyo3(signature = (materials, gamma_sv, radius, radius2, wall, t_vis, t_vis_law, k, v_max, rel_tol, chunks=None, method="search"))]
+#[pyo3(signature = (materials, gamma_sv, radius, radius2, wall, t_vis, t_vis_law, k, v_max, rel_tol, chunks=None, method="table"))]
 #[allow(clippy::too_many_arguments)]
 pub fn sweep<'py>(
     py: Python<'py>,

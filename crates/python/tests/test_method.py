@@ -1,6 +1,6 @@
-"""method="table": the master table answers V_stick, V_frag and the T_vis fit from the model's two
-dimensionless numbers, and the exact search (method="search", the default) is the truth it is
-held to. Tolerances are the issue's: 1e-5 relative where the table answers; the paper's CO2
+"""method="table" (the default): the master tables answer V_stick, V_frag and the T_vis fit from
+the model's two dimensionless numbers, and the exact search (method="search") is the truth they
+are held to. Tolerances are the issue's: 1e-5 relative where the table answers; the paper's CO2
 interval (Section 5.1: 8.5e-11 .. 1.97e-9 s) the same to 1e-4 through the table.
 """
 
@@ -13,9 +13,9 @@ import stickiness as st
 TABLE_REL_TOL = 1e-5
 
 
-def test_default_is_the_search():
-    r = st.v_stick("co2", 60e-6, 1e-9)
-    assert r.method == "search"
+def test_default_is_the_table_and_search_is_one_keyword_away():
+    assert st.v_stick("co2", 60e-6, 1e-9).method == "table"
+    assert st.v_stick("co2", 60e-6, 1e-9, method="search").method == "search"
 
 
 def test_table_matches_the_search_over_materials_sizes_and_geometries():
@@ -28,7 +28,7 @@ def test_table_matches_the_search_over_materials_sizes_and_geometries():
         ("co2", 2e-5, {"wall": True}),
     ]:
         table = st.v_stick(material, radius, t, method="table", **geometry)
-        search = st.v_stick(material, radius, t, **geometry)
+        search = st.v_stick(material, radius, t, method="search", **geometry)
         answered = table.method == "table"
         assert answered.sum() >= 5, table.method
         assert np.all(search.method == "search")
@@ -40,17 +40,20 @@ def test_table_matches_the_search_over_materials_sizes_and_geometries():
 
 
 def test_method_is_an_array_of_strings_for_arrays():
-    # beyond the cliff (T_vis = 1e-6 s for 60 um CO2 nothing bounces) the search answers
+    # beyond the cliff (T_vis = 1e-6 s for 60 um CO2 nothing bounces) the table says so itself;
+    # k = 0.06 (outside the tables' 0.005-0.05) goes to the search
     r = st.v_stick("co2", 60e-6, [1e-9, 1e-6], method="table", v_max=1.0)
     assert r.method.shape == (2,)
-    assert list(r.method) == ["table", "search"]
+    assert list(r.method) == ["table", "table"]
     assert np.isnan(r.v_stick[1]) and r.no_bouncing_below[1] == pytest.approx(1.0)
+    r = st.v_stick("co2", 60e-6, 1e-9, k=[0.01, 0.06])
+    assert list(r.method) == ["table", "search"]
 
 
 def test_fit_through_the_table_gives_the_papers_co2_interval():
     # Section 5.1: V_stick = 0.04 +- 0.02 m/s at R1 = 60 um -> 8.5e-11 .. 1.97e-9 s
     table = st.fit_t_vis("co2", 60e-6, 0.04, v_stick_err=0.02, method="table")
-    search = st.fit_t_vis("co2", 60e-6, 0.04, v_stick_err=0.02)
+    search = st.fit_t_vis("co2", 60e-6, 0.04, v_stick_err=0.02, method="search")
     assert table.method == "table"
     for field in ("t_vis", "t_vis_min", "t_vis_max"):
         assert getattr(table, field) == pytest.approx(getattr(search, field), rel=1e-4)
@@ -61,17 +64,17 @@ def test_fit_through_the_table_gives_the_papers_co2_interval():
 def test_v_frag_through_the_table():
     # Section 6: V_frag = 10 V_stick of the monomers (0.1 um H2O, size law of Section 5.3)
     table = st.v_frag("h2o", 1e-7, t_vis_law="h2o", method="table")
-    search = st.v_frag("h2o", 1e-7, t_vis_law="h2o")
+    search = st.v_frag("h2o", 1e-7, t_vis_law="h2o", method="search")
     assert table.method == "table"
     assert table.v_frag == pytest.approx(10 * table.v_stick, rel=1e-12)
     assert table.v_frag == pytest.approx(search.v_frag, rel=TABLE_REL_TOL)
 
 
 def test_other_k_is_answered_by_the_search():
-    # the tables hold k = 0.01 and 0.02; k = 0.05 falls back to the search, and says so
-    r = st.v_stick("co2", 60e-6, 1e-9, k=0.05, method="table")
+    # the tables span k = 0.005-0.05; k = 0.06 falls back to the search, and says so
+    r = st.v_stick("co2", 60e-6, 1e-9, k=0.06, method="table")
     assert r.method == "search"
-    assert r.v_stick == st.v_stick("co2", 60e-6, 1e-9, k=0.05).v_stick
+    assert r.v_stick == st.v_stick("co2", 60e-6, 1e-9, k=0.06, method="search").v_stick
 
 
 def test_sweep_has_a_method_column():

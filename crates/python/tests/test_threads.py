@@ -26,7 +26,7 @@ def test_another_thread_runs_while_one_computes():
     counter = threading.Thread(target=count)
     counter.start()
     start = time.perf_counter()
-    st.v_stick(CO2, t_vis=np.geomspace(1e-12, 1e-8, 48))
+    st.v_stick(CO2, t_vis=np.geomspace(1e-12, 1e-8, 48), method="search")
     elapsed = time.perf_counter() - start
     done.set()
     counter.join()
@@ -38,10 +38,10 @@ def test_another_thread_runs_while_one_computes():
 def test_two_threads_of_array_calls_overlap():
     t = np.geomspace(1e-12, 1e-8, 24)
     start = time.perf_counter()
-    st.v_stick(CO2, t_vis=t)
+    st.v_stick(CO2, t_vis=t, method="search")
     serial = time.perf_counter() - start
     results = []
-    threads = [threading.Thread(target=lambda: results.append(st.v_stick(CO2, t_vis=t))) for _ in range(2)]
+    threads = [threading.Thread(target=lambda: results.append(st.v_stick(CO2, t_vis=t, method="search"))) for _ in range(2)]
     start = time.perf_counter()
     for th in threads:
         th.start()
@@ -58,7 +58,7 @@ def test_two_threads_of_array_calls_overlap():
 def test_ctrl_c_stops_a_long_array_call():
     probe = np.full(16, 1e-9)
     start = time.perf_counter()
-    st.v_stick(CO2, t_vis=probe)
+    st.v_stick(CO2, t_vis=probe, method="search")
     per_element = (time.perf_counter() - start) / probe.size
     # an uninterrupted call of at least ~6 s; at least 3000 elements (>= 1.5 s even at 1 ms an
     # element on two cores) in case the probe ran slow, e.g. while other tests' workers exit
@@ -67,7 +67,7 @@ def test_ctrl_c_stops_a_long_array_call():
     start = time.perf_counter()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        st.v_stick(CO2, t_vis=np.full(n, 1e-9))
+        st.v_stick(CO2, t_vis=np.full(n, 1e-9), method="search")
     stopped = time.perf_counter() - start
     timer.cancel()
     assert stopped < 0.5 + 1.5, stopped

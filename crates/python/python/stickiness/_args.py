@@ -80,9 +80,18 @@ def si(name: str, value: Any) -> Any:
         ) from None
 
 
+#: Python number types taken as they are (the common case, checked first: no numpy call).
+_NUMBERS = (float, int)
+
+
 def float_array(name: str, value: Any) -> np.ndarray:
     """``value`` as a float64 array (SI); ``TypeError`` naming ``name`` for anything that is not
     real numbers."""
+    kind = type(value)
+    if kind is float or (kind is int):
+        return np.array(value, dtype=np.float64)
+    if kind is np.ndarray and value.dtype == np.float64:
+        return value
     value = si(name, value)
     if isinstance(value, (bool, np.bool_)):
         raise TypeError(f"{name}: expected a number or an array of numbers, got a bool")
@@ -101,6 +110,8 @@ def float_array(name: str, value: Any) -> np.ndarray:
 
 def scalar(name: str, value: Any) -> float:
     """One number (SI); ``TypeError`` naming ``name`` for an array or a non-number."""
+    if type(value) is float:
+        return value
     a = float_array(name, value)
     if a.ndim != 0:
         raise TypeError(f"{name}: expected one number, got an array of shape {a.shape}")
@@ -180,22 +191,34 @@ class Broadcast:
     """Number arguments broadcast together and flattened for the compiled core."""
 
     def __init__(self, **args: Any) -> None:
+        arrays: Dict[str, np.ndarray] = {}
         for k, v in args.items():
-            if v is None and k not in OPTIONAL:
-                raise TypeError(f"{k}: expected a number or an array of numbers, got None")
-        arrays = {k: float_array(k, v) for k, v in args.items() if v is not None}
+            if v is None:
+                if k not in OPTIONAL:
+                    raise TypeError(f"{k}: expected a number or an array of numbers, got None")
+                continue
+            arrays[k] = float_array(k, v)
         self.shapes: Dict[str, Tuple[int, ...]] = {k: a.shape for k, a in arrays.items()}
-        try:
-            views = np.broadcast_arrays(*arrays.values())
-        except ValueError:
-            shapes = ", ".join(f"{k} {s}" for k, s in self.shapes.items())
-            raise ValueError(f"the arguments cannot be broadcast together: {shapes}") from None
-        self.shape: Tuple[int, ...] = views[0].shape if views else ()
-        self.flat: Dict[str, np.ndarray] = {
-            k: np.ascontiguousarray(v, dtype=np.float64).reshape(-1)
-            for k, v in zip(arrays, views)
-        }
-        self.scalar = all(len(s) == 0 for s in self.shapes.values())
+        distinct = set(self.shapes.values())
+        if len(distinct) <= 1:
+            # one shape (all scalars, or arrays alike): nothing to broadcast
+            self.shape: Tuple[int, ...] = distinct.pop() if distinct else ()
+            self.flat: Dict[str, np.ndarray] = {
+                k: np.ascontiguousarray(a).reshape(-1) for k, a in arrays.items()
+            }
+        else:
+            try:
+                self.shape = np.broadcast_shapes(*distinct)
+            except ValueError:
+                shapes = ", ".join(f"{k} {s}" for k, s in self.shapes.items())
+                raise ValueError(f"the arguments cannot be broadcast together: {shapes}") from None
+            self.flat = {
+                k: (a.reshape(-1) if a.shape == self.shape
+                    else np.broadcast_to(a, self.shape).reshape(-1))
+                for k, a in arrays.items()
+            }
+            self.flat = {k: np.ascontiguousarray(a) for k, a in self.flat.items()}
+        self.scalar = not self.shape and all(not s for s in self.shapes.values())
 
     @property
     def size(self) -> int:
@@ -203,16 +226,19 @@ class Broadcast:
 
     def out(self, flat: Any) -> Any:
         """A flat result as a Python scalar (scalar inputs) or an array of the broadcast shape."""
-        a = np.asarray(flat)
         if self.scalar:
-            v = a.reshape(-1)[0]
-            return v.item() if hasattr(v, "item") else v
-        return a.reshape(self.shape)
+            return flat[0].item() if type(flat) is np.ndarray else flat[0]
+        return np.asarray(flat).reshape(self.shape)
 
     def methods(self, codes: Any) -> Any:
         """The core's method codes as ``'search'``/``'table'``: a string, or an array of them."""
-        names = np.array(METHODS)[np.asarray(codes, dtype=np.intp)]
-        return str(names.reshape(-1)[0]) if self.scalar else names.reshape(self.shape)
+        return self.names(METHODS, codes)
+
+    def names(self, names: Sequence[str], codes: Any) -> Any:
+        """Codes (indices into ``names``) as a string, or an array of them."""
+        if self.scalar:
+            return names[int(codes[0])]
+        return np.array(names)[np.asarray(codes, dtype=np.intp)].reshape(self.shape)
 
     def name_at(self, field: str, flat: int) -> str:
         """``field`` with the index, in its own shape, of element ``flat`` of the broadcast."""
@@ -229,8 +255,7 @@ class Broadcast:
         try:
             return fn(*args)
         except _core._InputError as e:
-            field, flat, rest = e.args
-            raise ValueError(self.name_at(field, flat) + rest) from None
+            raise ValueError(self.name_at(e.field, e.index) + e.rest) from None
 
     def warn(self, found: List[Tuple[int, str, str]], stacklevel: int = 4) -> None:
         """One ``StickinessWarning`` per kind of warning found, naming the first element.

@@ -52,7 +52,12 @@ class SolverError(RuntimeError):
     """A computation failed; the message names the parameters and where the solver stopped."""
 
 class _InputError(ValueError):
-    """Bad input at one element: args are (argument, flat index, message after the name)."""
+    """Bad input at one element: the message names the argument; ``field``, ``index`` (flat)
+    and ``rest`` (the message after the name) let the package name the element."""
+
+    field: str
+    index: int
+    rest: str
 
 @final
 class Material:
@@ -120,6 +125,7 @@ class CollisionColumns(TypedDict, total=False):
     sticking_criterion: List[Optional[str]]  # 'energy_bound', 'oscillations' or None
     warnings: _Warnings
     trajectory: Dict[str, _F]  # t (s), a, delta (m), delta_dot (m/s), beta, energy (J)
+    method: npt.NDArray[np.uint8]  # 0: the ODE, 1: the restitution tables
 
 class VStickColumns(TypedDict):
     """The columns of :func:`v_stick` (flat, m/s; NaN where none)."""
@@ -159,7 +165,12 @@ def t_vis_law(law: str, radius: _F) -> _F: ...
 def parallel_batch() -> int: ...
 def jkr(material: Material, radius: _F, radius2: Optional[_F], wall: bool) -> JkrColumns: ...
 def dimensionless(
-    material: Material, radius: _F, radius2: Optional[_F], wall: bool, t_vis: _F
+    material: Material,
+    radius: _F,
+    radius2: Optional[_F],
+    wall: bool,
+    t_vis: _F,
+    gamma_sv: Optional[_F] = None,
 ) -> DimensionlessColumns: ...
 def collide(
     material: Material,
@@ -171,6 +182,8 @@ def collide(
     k: _F,
     t_end: Optional[float],
     trajectory: bool,
+    method: str = "search",
+    gamma_sv: Optional[_F] = None,
 ) -> CollisionColumns: ...
 def v_stick(
     material: Material,
@@ -182,6 +195,7 @@ def v_stick(
     v_max: Optional[float],
     rel_tol: float,
     method: str,
+    gamma_sv: Optional[_F] = None,
 ) -> VStickColumns: ...
 def fit_t_vis(
     material: Material,
@@ -194,6 +208,7 @@ def fit_t_vis(
     v_max: Optional[float],
     rel_tol: float,
     method: str,
+    gamma_sv: Optional[_F] = None,
 ) -> FitColumns: ...
 def v_frag(
     material: Material,
@@ -205,6 +220,7 @@ def v_frag(
     v_max: Optional[float],
     rel_tol: float,
     method: str,
+    gamma_sv: Optional[_F] = None,
 ) -> VFragColumns: ...
 def sweep(
     materials: List[Tuple[str, Material]],
@@ -218,5 +234,5 @@ def sweep(
     v_max: Optional[float],
     rel_tol: float,
     chunks: Optional[List[int]] = None,
-    method: str = "search",
+    method: str = "table",
 ) -> Dict[str, Any]: ...

@@ -38,12 +38,13 @@ PARAMETERS: Dict[str, str] = {
         V_stick,JKR.""",
     "rel_tol": """rel_tol : float, optional
         Relative width of the final brackets of the search (dimensionless). Default 1e-6.""",
-    "method": """method : {'search', 'table'}, optional
-        ``'search'`` (default): the exact search, 20-100 collisions, milliseconds a point.
-        ``'table'``: the master table of V_stick / V_stick,JKR over the two dimensionless
-        numbers, microseconds a point and within 1e-5 of the search where it vouches for its
-        accuracy; elsewhere (near the no-bouncing cliff, k other than 0.01 and 0.02) the search
-        answers. The result's ``method`` says which answered.""",
+    "method": """method : {'table', 'search'}, optional
+        ``'table'`` (default): the master tables of V_stick / V_stick,JKR over the two
+        dimensionless numbers and k, about a microsecond a point and within 1e-5 of the search
+        where they vouch for their accuracy; elsewhere (a thin band at the no-bouncing cliff, k
+        outside 0.005-0.05, an explicit ``rel_tol`` below 1e-5) the search answers.
+        ``'search'``: the exact search, 20-100 collisions, milliseconds a point. The result's
+        ``method`` says which answered.""",
     "broadcast": """Every number argument broadcasts like numpy: scalars in give Python floats out,
     arrays in give ndarrays of the broadcast shape, computed on all cores with the GIL released
     (Ctrl-C stops them within about a second). Dimensional arguments accept

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Dict, List, Optional, Sequence, Tuple
+from typing import Any, Dict, Optional, Sequence, Tuple
 
 import numpy as np
 
@@ -188,7 +188,9 @@ class Model:
         self.method = method
         self.rel_tol = rel_tol
         self.quantile = v_stick_quantile
-        self.v_max = data.fastest()
+        # the thresholds are searched up to the fastest speed the data need (None: only
+        # restitution data, no threshold needed)
+        self.v_max = data.fastest() or None
         nodes = min(RESTITUTION_NODES, len(sizes))
         if nodes == len(sizes):
             self.e_radii, self.e_weights = sizes.radii, sizes.weights
@@ -197,57 +199,51 @@ class Model:
             self.e_radii = np.array([sizes.quantile(x) for x in q])
             self.e_weights = np.full(nodes, 1.0 / nodes)
 
-    def _materials(self, gamma_sv: Optional[np.ndarray], n: int) -> List[Material]:
-        if gamma_sv is None:
-            return [self.material]
-        return [self.material.replace(gamma_sv=float(g)) for g in gamma_sv[:n]]
-
     def _second(self, n: int) -> Optional[np.ndarray]:
         return None if self.radius2 is None else np.full(n, self.radius2)
 
+    def _call(self, core: Any, *args: Any) -> Any:
+        """A core call, its bad input (a walker's gamma_SV, say) as a ``ValueError`` naming the
+        argument."""
+        try:
+            return core(*args)
+        except _core._InputError as e:
+            raise ValueError(str(e)) from None
+
     def v_stick(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
         """V_stick (m/s) of shape (walkers, radii); ``inf`` where it lies beyond the search
-        limit (no bouncing up to it)."""
+        limit (no bouncing up to it). One core call for every walker and radius."""
         radii = self.sizes.radii
         n, r = t_vis.size, radii.size
-        if gamma_sv is None:
-            calls = [(self.material, np.tile(radii, n), np.repeat(t_vis, r))]
-        else:
-            calls = [(m, radii, np.full(r, t)) for m, t in zip(self._materials(gamma_sv, n), t_vis)]
-        out = []
-        for m, rad, t in calls:
-            d = _core.v_stick(
-                m, rad, self._second(rad.size), self.wall, t, np.full(rad.size, self.k),
-                self.v_max, self.rel_tol, self.method,
-            )
-            out.append(np.where(np.isnan(d["v_stick"]), np.inf, d["v_stick"]))
-        return np.concatenate(out).reshape(n, r)
+        g = None if gamma_sv is None else np.repeat(gamma_sv, r)
+        d = self._call(
+            _core.v_stick, self.material, np.tile(radii, n), self._second(n * r), self.wall,
+            np.repeat(t_vis, r), np.full(n * r, self.k), self.v_max, self.rel_tol, self.method, g,
+        )
+        return np.where(np.isnan(d["v_stick"]), np.inf, d["v_stick"]).reshape(n, r)
 
     def e_observed(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
         """The observed e (0 for sticking and double collisions, Section 4.4) of shape
-        (walkers, restitution nodes, speeds)."""
+        (walkers, restitution nodes, speeds): one core call for every walker, radius and speed,
+        answered by the restitution tables where they vouch (``method='table'``), by the ODE
+        elsewhere."""
         assert self.data.restitution is not None
         v = self.data.restitution[0]
         radii = self.e_radii
         n, r, s = t_vis.size, radii.size, v.size
-        if gamma_sv is None:
-            # one call: walkers x radii x speeds
-            calls = [(self.material, np.repeat(t_vis, r * s), np.tile(np.repeat(radii, s), n),
-                      np.tile(v, n * r))]
-        else:
-            calls = [(m, np.full(r * s, t), np.repeat(radii, s), np.tile(v, r))
-                     for m, t in zip(self._materials(gamma_sv, n), t_vis)]
-        out = []
-        for m, t, rad, speeds in calls:
-            second = self._second(rad.size)
-            c_a = _core.dimensionless(m, rad, second, self.wall, np.ones(rad.size))["c_a"]
-            # c_a ~ 1/T_vis: below c_a(1 s)/C_A_MAX the elastic limit has been reached
-            t = np.maximum(t, c_a / C_A_MAX)
-            c = _core.collide(
-                m, rad, second, self.wall, t, speeds, np.full(rad.size, self.k), None, False
-            )
-            out.append(c["e_observed"])
-        return np.concatenate(out).reshape(n, r, s)
+        rad = np.tile(np.repeat(radii, s), n)
+        g = None if gamma_sv is None else np.repeat(gamma_sv, r * s)
+        second = self._second(rad.size)
+        c_a = self._call(
+            _core.dimensionless, self.material, rad, second, self.wall, np.ones(rad.size), g
+        )["c_a"]
+        # c_a ~ 1/T_vis: below c_a(1 s)/C_A_MAX the elastic limit has been reached
+        t = np.maximum(np.repeat(t_vis, r * s), c_a / C_A_MAX)
+        c = self._call(
+            _core.collide, self.material, rad, second, self.wall, t, np.tile(v, n * r),
+            np.full(rad.size, self.k), None, False, self.method, g,
+        )
+        return np.asarray(c["e_observed"]).reshape(n, r, s)
 
     def log_likelihood(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
         """ln L of the data for each walker (``-inf`` where the data are impossible)."""
@@ -258,7 +254,7 @@ class Model:
             vs = self.v_stick(t_vis, gamma_sv)
             if data.v_stick is not None:
                 value, sigma = data.v_stick
-                clipped = np.minimum(vs, self.v_max)
+                clipped = vs if self.v_max is None else np.minimum(vs, self.v_max)
                 q = (clipped[:, 0] if clipped.shape[1] == 1
                      else weighted_quantile(clipped, self.sizes.weights, self.quantile))
                 total += -0.5 * ((np.asarray(q) - value) / sigma) ** 2

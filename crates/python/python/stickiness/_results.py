@@ -108,6 +108,9 @@ class Collision:
     trajectory : dict of ndarray or None
         With ``trajectory=True``: ``t`` (s), ``a``, ``delta`` (m), ``delta_dot`` (m/s),
         ``beta`` (dimensionless) and ``energy`` (J) at every solver step; None otherwise.
+    method : str or ndarray of str
+        Which answered: ``'ode'`` (the collision integrated) or ``'table'`` (the restitution
+        tables: outcome, e and V_out only; no contact time or criterion).
     """
 
     #: ``'sticking'``, ``'double'`` or ``'bouncing'`` (an array of these for array inputs).
@@ -126,6 +129,8 @@ class Collision:
     e_observed: FloatOrArray
     #: With ``trajectory=True``: ``t``, ``a``, ``delta``, ``delta_dot``, ``beta``, ``energy``.
     trajectory: Optional[Dict[str, np.ndarray]] = None
+    #: Which answered: ``'ode'`` or ``'table'``.
+    method: StrOrArray = "ode"
 
 
 @dataclass(frozen=True)

@@ -71,7 +71,7 @@ class SweepSpec:
     k: Tuple[float, ...]
     v_max: Optional[float]
     rel_tol: float
-    method: str = "search"
+    method: str = "table"
 
     @property
     def n_chunks(self) -> int:
@@ -98,8 +98,7 @@ class SweepSpec:
                 )
             )
         except _core._InputError as e:
-            field, _, rest = e.args
-            raise ValueError(field + rest) from None
+            raise ValueError(str(e)) from None
 
 
 def compute_chunks(spec: SweepSpec, chunks: Sequence[int]) -> Dict[str, Any]:
@@ -136,7 +135,7 @@ def sweep(
     t_vis_law: Optional[str] = None,
     v_max: Optional[float] = None,
     rel_tol: float = _core.DEFAULT_REL_TOL,
-    method: str = "search",
+    method: str = "table",
     client: Any = None,
     progress: bool = False,
     chunks_per_task: int = 1,
