@@ -281,7 +281,14 @@ fn method_column() {
     // k = 0.06 lies outside the tables' 0.005-0.05: the search answers it; beyond the cliff
     // (1e-6 s) the tables say "no bouncing" themselves
     let (code, _, err) = sweep(
-        &["--t-vis", "1e-9,1e-6", "--k", "0.01,0.06", "--method", "table"],
+        &[
+            "--t-vis",
+            "1e-9,1e-6",
+            "--k",
+            "0.01,0.06",
+            "--method",
+            "table",
+        ],
         &out,
     );
     assert_eq!(code, 0, "{err}");
@@ -291,6 +298,11 @@ fn method_column() {
         .collect();
     assert_eq!(
         methods,
-        ["0.01 1e-9 table", "0.06 1e-9 search", "0.01 1e-6 table", "0.06 1e-6 search"]
+        [
+            "0.01 1e-9 table",
+            "0.06 1e-9 search",
+            "0.01 1e-6 table",
+            "0.06 1e-6 search"
+        ]
     );
 }

@@ -102,6 +102,24 @@ def test_recovery_with_gamma_free(polydisperse):
     assert list(post.samples.columns) == ["t_vis", "gamma_sv"]
 
 
+def test_recovery_from_restitution_alone():
+    # the case: e of five bouncing collisions (made with the model at 3e-10 s and the
+    # preset gamma_SV, measured to 0.02) and nothing else; both parameters free. Truth: the
+    # parameters the data were made with.
+    rng = np.random.default_rng(11)
+    t_true = 3e-10
+    v = np.array([0.03, 0.05, 0.08, 0.12, 0.2])
+    e = st.collide(CO2, R, t_true, v).e_observed + rng.normal(0.0, 0.02, v.size)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", st.StickinessWarning)  # short chains in a test
+        post = st.infer(CO2, R, restitution=(v, np.clip(e, 0.0, 1.0), np.full(v.size, 0.02)),
+                        free=("t_vis", "gamma_sv"), walkers=16, steps=150, seed=5)
+    lo, hi = post.interval("t_vis", level=0.95)
+    assert lo < t_true < hi
+    lo, hi = post.interval("gamma_sv", level=0.95)
+    assert lo < CO2.gamma_sv < hi
+
+
 def test_simulation_based_calibration():
     # truth: parameters drawn from the prior and data made with the model at them; then the
     # 68 % and 95 % intervals must cover the truth in 68 % and 95 % of the data sets
