@@ -14,7 +14,7 @@
 //!    decides).
 
 use super::format::{Table, F_TOP};
-use super::interp::{interval, lagrange, stencil_start};
+use super::interp::{lagrange, stencil_start};
 use super::table::Curve;
 use super::MasterTables;
 
@@ -63,22 +63,45 @@ fn side(e: Eval, f_max: f64) -> Side {
 }
 
 /// The tables that answer at k: one (k is a table's own) or four around k in ln k, with the
-/// interval of k between two tables (for the k checks).
+/// interval of k between two tables (for the k checks). Fixed arrays: no allocation per answer.
 struct KStencil<'a> {
-    tables: Vec<&'a Table>,
+    tables: [&'a Table; 4],
+    /// How many of `tables` (and `ln_k`) are used: 1 or 4.
+    n: usize,
     /// ln k of the tables.
-    ln_k: Vec<f64>,
+    ln_k: [f64; 4],
     /// The k interval (between tables i and i + 1), `None` at a table's own k.
     interval: Option<usize>,
+}
+
+impl KStencil<'_> {
+    fn tables(&self) -> &[&Table] {
+        &self.tables[..self.n]
+    }
+
+    /// The values of the stencil's tables (`None` if any is missing) combined at `ln_k`.
+    fn combine(&self, ln_k: f64, mut g: impl FnMut(&Table) -> Option<f64>) -> Option<f64> {
+        let mut v = [0.0; 4];
+        for (q, t) in self.tables().iter().enumerate() {
+            v[q] = g(t)?;
+        }
+        Some(if self.n == 1 {
+            v[0]
+        } else {
+            lagrange(&self.ln_k, &v, ln_k)
+        })
+    }
 }
 
 impl MasterTables {
     fn k_stencil(&self, k: f64) -> Option<KStencil<'_>> {
         let ks = self.table_k();
         if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
+            let t = self.table(i)?;
             return Some(KStencil {
-                tables: vec![self.table(i)?],
-                ln_k: vec![k.ln()],
+                tables: [t; 4],
+                n: 1,
+                ln_k: [k.ln(); 4],
                 interval: None,
             });
         }
@@ -86,12 +109,17 @@ impl MasterTables {
         if n < 4 || !(k > ks[0] && k < ks[n - 1]) {
             return None;
         }
-        let ln: Vec<f64> = ks.iter().map(|k| k.ln()).collect();
-        let i = interval(&ln, k.ln());
+        let i = (1..n).find(|&i| ks[i] > k).map_or(n - 2, |i| i - 1);
         let s = stencil_start(i, n);
         Some(KStencil {
-            tables: (s..s + 4).map(|t| self.table(t)).collect::<Option<_>>()?,
-            ln_k: ln[s..s + 4].to_vec(),
+            tables: [
+                self.table(s)?,
+                self.table(s + 1)?,
+                self.table(s + 2)?,
+                self.table(s + 3)?,
+            ],
+            n: 4,
+            ln_k: [ks[s].ln(), ks[s + 1].ln(), ks[s + 2].ln(), ks[s + 3].ln()],
             interval: Some(i),
         })
     }
@@ -130,33 +158,19 @@ impl MasterTables {
             },
             None => None,
         };
-        let combine = |g: Vec<f64>| {
-            if g.len() == 1 {
-                g[0]
-            } else {
-                lagrange(&ks.ln_k, &g, ln_k)
-            }
-        };
-        let monotone = ks.tables.iter().all(|t| t.monotone(y));
+        let monotone = ks.tables().iter().all(|t| t.monotone(y));
         // plain: vouched up to x_hi
         let plain = (curve != Curve::OnsetStrip)
             .then(|| {
                 let v = usize::from(curve != Curve::Stick);
                 let mut hi = check.map_or(f64::INFINITY, |c| c[v]);
-                for t in &ks.tables {
+                for t in ks.tables() {
                     hi = hi.min(t.plain_limit(curve, y)?);
                 }
                 Some(hi)
             })
             .flatten();
-        let g_plain = |x: f64| -> Option<f64> {
-            let g: Vec<f64> = ks
-                .tables
-                .iter()
-                .map(|t| t.g_plain(curve, y, x))
-                .collect::<Option<_>>()?;
-            Some(combine(g))
-        };
+        let g_plain = |x: f64| ks.combine(ln_k, |t| t.g_plain(curve, y, x));
         if let Some(hi) = plain {
             if x <= hi {
                 return g_plain(x).map_or(Eval::Unknown, Eval::Value);
@@ -172,7 +186,7 @@ impl MasterTables {
             };
             let (mut lo, mut hi) = (check.map_or(f64::NEG_INFINITY, |k| k[c]), f64::INFINITY);
             let mut vouched = true;
-            for t in &ks.tables {
+            for t in ks.tables() {
                 match t.vouched(curve, y) {
                     Some((l, h)) => {
                         lo = lo.max(l);
@@ -182,14 +196,7 @@ impl MasterTables {
                 }
             }
             if vouched && lo <= hi {
-                let at = |u: f64| -> Option<f64> {
-                    let g: Vec<f64> = ks
-                        .tables
-                        .iter()
-                        .map(|t| t.g_at(curve, y, u))
-                        .collect::<Option<_>>()?;
-                    Some(combine(g))
-                };
+                let at = |u: f64| ks.combine(ln_k, |t| t.g_at(curve, y, u));
                 // far from the end the body's ratios have converged (the JKR limit): its first
                 // node answers beyond it; a strip has no such side
                 let u = match curve {
@@ -220,19 +227,10 @@ impl MasterTables {
     /// checks between tables (which the build computes with it).
     pub fn g_between_tables(&self, curve: Curve, y: f64, u: f64, k: f64) -> Option<f64> {
         let ks = self.k_stencil(k)?;
-        let g: Vec<f64> = ks
-            .tables
-            .iter()
-            .map(|t| {
-                let (lo, hi) = t.vouched(curve, y)?;
-                (u >= lo && u <= hi).then_some(())?;
-                t.g_at(curve, y, u)
-            })
-            .collect::<Option<_>>()?;
-        Some(if g.len() == 1 {
-            g[0]
-        } else {
-            lagrange(&ks.ln_k, &g, k.ln())
+        ks.combine(k.ln(), |t| {
+            let (lo, hi) = t.vouched(curve, y)?;
+            (u >= lo && u <= hi).then_some(())?;
+            t.g_at(curve, y, u)
         })
     }
 
@@ -240,18 +238,9 @@ impl MasterTables {
     /// vouches for it.
     pub fn g_plain_between_tables(&self, curve: Curve, y: f64, x: f64, k: f64) -> Option<f64> {
         let ks = self.k_stencil(k)?;
-        let g: Vec<f64> = ks
-            .tables
-            .iter()
-            .map(|t| {
-                (x <= t.plain_limit(curve, y)?).then_some(())?;
-                t.g_plain(curve, y, x)
-            })
-            .collect::<Option<_>>()?;
-        Some(if g.len() == 1 {
-            g[0]
-        } else {
-            lagrange(&ks.ln_k, &g, k.ln())
+        ks.combine(k.ln(), |t| {
+            (x <= t.plain_limit(curve, y)?).then_some(())?;
+            t.g_plain(curve, y, x)
         })
     }
 
@@ -274,7 +263,7 @@ impl MasterTables {
         let beyond = |end: Option<f64>| {
             // past its end a ratio exceeds F_TOP (rows checked for no bouncing beyond)
             match end {
-                Some(end) if x >= end && ks.tables.iter().all(|t| t.monotone(y)) => {
+                Some(end) if x >= end && ks.tables().iter().all(|t| t.monotone(y)) => {
                     Some(if F_TOP > f_max * (1.0 + V_MAX_MARGIN) {
                         Side::Above
                     } else {

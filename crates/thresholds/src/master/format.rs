@@ -387,6 +387,8 @@ pub struct Piece {
     pub g: [Vec<f64>; 2],
     /// `[F, F_on]`: vouched for u >= this (ln of the piece's `d_lo`).
     pub u_lo: [f64; 2],
+    /// `[F, F_on]`: vouched for x <= this (`end - d_lo`; kept to spare an `exp` per answer).
+    pub x_hi: [f64; 2],
 }
 
 impl Piece {
@@ -400,6 +402,7 @@ impl Piece {
                 rev(&p.f_onset, &|r| (r - 1.0).ln()),
             ],
             u_lo: [p.d_lo[0].ln(), p.d_lo[1].ln()],
+            x_hi: [end - p.d_lo[0], end - p.d_lo[1]],
         }
     }
 
@@ -464,7 +467,7 @@ impl Table {
 }
 
 /// The binary form's first bytes.
-const MAGIC: &[u8; 8] = b"STKMT003";
+const MAGIC: &[u8; 8] = b"STKMT004";
 
 /// Appends numbers to the binary form.
 #[derive(Default)]
@@ -489,6 +492,8 @@ impl Writer {
         self.fs(&p.g[1]);
         self.f(p.u_lo[0]);
         self.f(p.u_lo[1]);
+        self.f(p.x_hi[0]);
+        self.f(p.x_hi[1]);
     }
 }
 
@@ -520,6 +525,7 @@ impl Reader<'_> {
             u: self.fs()?,
             g: [self.fs()?, self.fs()?],
             u_lo: [self.f()?, self.f()?],
+            x_hi: [self.f()?, self.f()?],
         })
     }
 }

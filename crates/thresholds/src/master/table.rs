@@ -103,7 +103,7 @@ impl Table {
             if row.body.u.len() < 2 {
                 return None;
             }
-            hi = hi.min(row.x_s - row.body.u_lo[v].exp());
+            hi = hi.min(row.body.x_hi[v]);
         }
         hi.is_finite().then_some(hi)
     }
