@@ -191,6 +191,16 @@ class Broadcast:
     """Number arguments broadcast together and flattened for the compiled core."""
 
     def __init__(self, **args: Any) -> None:
+        if all(type(v) is float or (v is None and k in OPTIONAL) for k, v in args.items()):
+            # the common scalar call (floats only): one-element arrays, nothing to check or
+            # broadcast (a third of a scalar call's overhead otherwise)
+            self.shapes: Dict[str, Tuple[int, ...]] = {k: () for k, v in args.items() if v is not None}
+            self.shape: Tuple[int, ...] = ()
+            self.flat: Dict[str, np.ndarray] = {
+                k: np.array([v]) for k, v in args.items() if v is not None
+            }
+            self.scalar = True
+            return
         arrays: Dict[str, np.ndarray] = {}
         for k, v in args.items():
             if v is None:
@@ -198,12 +208,12 @@ class Broadcast:
                     raise TypeError(f"{k}: expected a number or an array of numbers, got None")
                 continue
             arrays[k] = float_array(k, v)
-        self.shapes: Dict[str, Tuple[int, ...]] = {k: a.shape for k, a in arrays.items()}
+        self.shapes = {k: a.shape for k, a in arrays.items()}
         distinct = set(self.shapes.values())
         if len(distinct) <= 1:
             # one shape (all scalars, or arrays alike): nothing to broadcast
-            self.shape: Tuple[int, ...] = distinct.pop() if distinct else ()
-            self.flat: Dict[str, np.ndarray] = {
+            self.shape = distinct.pop() if distinct else ()
+            self.flat = {
                 k: np.ascontiguousarray(a).reshape(-1) for k, a in arrays.items()
             }
         else:
