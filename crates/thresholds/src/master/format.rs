@@ -441,6 +441,34 @@ pub struct Table {
     /// Per cell ([`CellData::limits`]): `[x_hi F, x_hi F_on]` (plain x, vouched for x <= this)
     /// and `[body F, body F_on, strip F_on]` (at a fixed distance, vouched for u >= this).
     pub cells: Vec<[f64; 5]>,
+    /// The cell of each bin of y, 1/[`Y_BINS`] wide from the first row ([`y_bins`]): the cell of
+    /// a y without a search.
+    pub y_bins: Vec<u32>,
+}
+
+/// Bins of y per unit: the rows lie on this grid (0.5 halved down to 1/64 by the build).
+pub const Y_BINS: f64 = 64.0;
+
+/// The cell (`i`: between rows i and i + 1) of each bin of y of [`Y_BINS`] from `ys[0]`; empty
+/// unless every row lies on that grid.
+pub fn y_bins(ys: &[f64]) -> Vec<u32> {
+    let Some((&y0, &y1)) = ys.first().zip(ys.last()) else {
+        return Vec::new();
+    };
+    let on_grid = ys.iter().all(|y| {
+        let p = (y - y0) * Y_BINS;
+        (p - p.round()).abs() < 1e-9
+    });
+    if ys.len() < 2 || !on_grid {
+        return Vec::new();
+    }
+    let bins = ((y1 - y0) * Y_BINS).round() as usize;
+    (0..bins)
+        .map(|m| {
+            let mid = y0 + (m as f64 + 0.5) / Y_BINS;
+            (ys.partition_point(|&v| v <= mid) - 1) as u32
+        })
+        .collect()
 }
 
 impl Table {
@@ -462,6 +490,7 @@ impl Table {
                 })
                 .collect(),
             cells: t.cells.iter().map(CellData::limits).collect(),
+            y_bins: y_bins(&t.rows.iter().map(|r| r.y).collect::<Vec<_>>()),
         }
     }
 }
@@ -655,9 +684,11 @@ pub fn table_from_bytes(bytes: &[u8], i: usize) -> Option<Table> {
     let cells = (0..n.saturating_sub(1))
         .map(|_| Some([r.f()?, r.f()?, r.f()?, r.f()?, r.f()?]))
         .collect::<Option<Vec<_>>>()?;
+    let ys: Vec<f64> = rows.iter().map(|r| r.y).collect();
     Some(Table {
         k,
-        ys: rows.iter().map(|r| r.y).collect(),
+        y_bins: y_bins(&ys),
+        ys,
         rows,
         cells,
     })

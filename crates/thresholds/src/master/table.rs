@@ -54,7 +54,12 @@ impl Table {
         if n < 4 || !(y >= self.ys[1] && y <= self.ys[n - 2]) {
             return None;
         }
-        let j = interval(&self.ys, y);
+        // the bin's cell (no search), checked; a search where the rows are off the bins' grid
+        let bin = ((y - self.ys[0]) * format::Y_BINS) as usize;
+        let j = match self.y_bins.get(bin) {
+            Some(&j) if self.ys[j as usize] <= y && y <= self.ys[j as usize + 1] => j as usize,
+            _ => interval(&self.ys, y),
+        };
         Some((stencil_start(j, n), j))
     }
 
