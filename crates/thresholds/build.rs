@@ -33,12 +33,9 @@ fn main() {
     std::fs::write(out, bytes).expect("OUT_DIR is writable");
     let out =
         Path::new(&std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("restitution.bin");
-    let bytes = match read_restitution(data) {
-        Ok(bytes) => bytes,
-        // none built yet is no fault (no warning on every build): collisions are then
-        // integrated (`method = "table"` falls back to the ODE, and results say so)
-        Err(_) => Vec::new(),
-    };
+    // none built yet is no fault (no warning on every build): collisions are then integrated
+    // (`method = "table"` falls back to the ODE, and results say so)
+    let bytes = read_restitution(data).unwrap_or_default();
     std::fs::write(out, bytes).expect("OUT_DIR is writable");
 }
 
