@@ -307,7 +307,7 @@ fn table_h(
 /// Significant figures of h written: 8, far below what e = 1e-4 needs.
 const DIGITS: usize = 8;
 
-/// The text of one restitution table (see [`format`]).
+/// The text of one restitution table (see [`mod@format`]).
 pub fn to_text(t: &format::TableData) -> String {
     use numerics::format::number;
     use std::fmt::Write as _;

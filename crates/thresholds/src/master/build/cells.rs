@@ -34,7 +34,7 @@ fn curve(p: &PieceData, end: f64, v: usize) -> (Vec<f64>, Vec<f64>) {
 }
 
 /// Sheared checks reach this far from the end (in x): beyond, the cells are interpolated in
-/// plain x ([`crate::master::table`]).
+/// plain x (`crate::master::table`).
 pub const SHEARED_REACH: f64 = 2.0;
 
 /// The last check point that passed before the first that failed, in the order given: `all`

@@ -65,7 +65,7 @@ pub fn top_collision(cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64) -> Optio
     })
 }
 
-/// x_s at `y` near `guess` (or scanned for from [`SCAN`] without one).
+/// x_s at `y` near `guess` (or scanned for from `SCAN` without one).
 pub fn x_s(cfg: &BuildConfig, law: &CrackLaw, y: f64, guess: Option<f64>) -> Option<f64> {
     let f = |x: f64| top_collision(cfg, law, x, y);
     let (mut a, mut fa, mut b, mut fb);
