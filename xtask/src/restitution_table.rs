@@ -9,6 +9,7 @@ use crate::master_table::{committed_ends, data_dir};
 use numerics::format::number;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
+use thresholds::master::build::grid_k;
 use thresholds::restitution::build::{build_table, k_cells, BuildConfig};
 use thresholds::restitution::format::{parse, TableData};
 use thresholds::restitution::to_text;
@@ -26,13 +27,15 @@ pub fn table_path(root: &Path, k: f64) -> PathBuf {
     data_dir(root).join(format!("restitution_k{k:.5}.csv"))
 }
 
-/// The committed restitution tables, in increasing k.
+/// The committed restitution tables, in increasing k: one for each master table that has one
+/// (they are built one k at a time).
 pub fn committed(root: &Path) -> Result<Vec<TableData>, Error> {
     MasterTables::standard()
         .table_k()
         .iter()
-        .map(|&k| {
-            let path = table_path(root, k);
+        .map(|&k| table_path(root, k))
+        .filter(|path| path.exists())
+        .map(|path| {
             let text =
                 std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
             parse(&text)
@@ -48,15 +51,22 @@ pub fn run_build(root: &Path, only: &[usize]) -> Result<(), Error> {
     let ends = committed_ends(root)?;
     let masters = MasterTables::standard();
     let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
-    let n = masters.table_k().len();
-    if n == 0 {
+    if masters.table_k().is_empty() {
         return Err(
             "the master tables are not embedded: build them first (cargo xtask master-table)"
                 .into(),
         );
     }
-    for i in 0..n {
-        if !only.is_empty() && !only.contains(&i) {
+    // the indices of the standard k grid (k = 0.005 2^(i/3)) that have a master table
+    let has_master = |i: usize| {
+        let k = grid_k(ends.k0, 3, i);
+        masters
+            .table_k()
+            .iter()
+            .any(|&t| (t / k - 1.0).abs() < 1e-9)
+    };
+    for i in 0..BuildConfig::TABLES {
+        if !has_master(i) || (!only.is_empty() && !only.contains(&i)) {
             continue;
         }
         let t = build_table(&cfg, i, &ends, masters, &progress)?;

@@ -52,6 +52,9 @@ pub struct BuildConfig {
 }
 
 impl BuildConfig {
+    /// The tables of the standard k grid, k = 0.005 2^(i/3), i = 0..10 (the master tables').
+    pub const TABLES: usize = 11;
+
     /// The settings of the committed tables.
     pub fn standard() -> Self {
         let mut sigma: Vec<f64> = (0..=10).map(|i| i as f64 * 0.1).collect();
@@ -86,9 +89,9 @@ fn collide(cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64, s: f64) -> Option<
     Some((r.outcome, r.v_out / jkr))
 }
 
-/// `h = w |w|` with `w = V_out / V_stick` of the collision at channel `q` (sigma when
-/// `bouncing`, else nu) of the node at `(x, y)` with ratios `f`, `f_on`; NaN where it cannot be
-/// had.
+/// The channel value of the collision at channel `q` (sigma when `bouncing`, else nu) of the
+/// node at `(x, y)` with ratios `f`, `f_on` ([`super::format`]: `-e^2` bouncing, `w |w|` with
+/// `w = V_out / V_stick` on the double side); NaN where it cannot be had.
 #[allow(clippy::too_many_arguments)]
 pub fn node_channel(
     cfg: &BuildConfig,
@@ -118,7 +121,12 @@ pub fn node_channel(
         Some((Outcome::Sticking, _)) | None => f64::NAN,
         Some((_, v_out)) => {
             let w = v_out / f;
-            w * w.abs()
+            if bouncing {
+                // -e^2 = w |w| e^(-2 sigma): bounded where w|w| grows as e^(2 sigma)
+                w * w.abs() * (-2.0 * q).exp()
+            } else {
+                w * w.abs()
+            }
         }
     }
 }
@@ -129,14 +137,14 @@ fn ratios(masters: &MasterTables, x: f64, y: f64, k: f64) -> Option<(f64, f64)> 
     Some((r.v_stick?, r.v_double_onset?))
 }
 
-/// e = -V_out / V_in from `h` at `s` V_stick,JKR with V_stick = `f` V_stick,JKR.
+/// e = -V_out / V_in from the channel value `h` at `s` V_stick,JKR with V_stick = `f`
+/// V_stick,JKR.
 fn e_of(h: f64, f: f64, s: f64, bouncing: bool) -> f64 {
-    let w = if bouncing {
-        -(-h).max(0.0).sqrt()
+    if bouncing {
+        (-h).max(0.0).sqrt()
     } else {
-        h.max(0.0).sqrt()
-    };
-    -w * f / s
+        -h.max(0.0).sqrt() * f / s
+    }
 }
 
 /// One row of the table of `law`'s k at `y` ending at `x_s`.
@@ -270,7 +278,7 @@ pub fn build_table(
     let mut table = TableData {
         k,
         header: vec![
-            format!("restitution table: h = w |w|, w = V_out/V_stick, over x = log10 c_D, y = log10(c_D c_a), k = {k}, at channels sigma = ln(V_in/V_stick) (bouncing) and nu = ln(V_stick/V_in)/ln(F/F_on) (double collisions); V_stick and V_on from the master tables"),
+            format!("restitution table: -e^2 (bouncing) and w |w|, w = V_out/V_stick (double collisions), over x = log10 c_D, y = log10(c_D c_a), k = {k}, at channels sigma = ln(V_in/V_stick) (bouncing) and nu = ln(V_stick/V_in)/ln(F/F_on) (double collisions); V_stick and V_on from the master tables"),
             format!("nodes: one collision at rtol {} per channel; cells checked at their centres against the ODE to {} in e", number(cfg.solver.rtol), number(cfg.tol_e)),
         ],
         sigma: cfg.sigma.clone(),

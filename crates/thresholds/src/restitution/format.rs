@@ -12,9 +12,10 @@
 //! cells,<0|1 ...>              per interval of this row's nodes: its cell to the next row vouched
 //! kcells,<0|1 ...>             the same cells, for the cubic in ln k up to the next table
 //! ```
-//! `h = w |w|` with `w = V_out / V_stick` (V_out < 0: bouncing, > 0: a double collision), which
-//! is smooth in sigma from the JKR limit (where `h = 1 - e^(2 sigma)`) to strong damping
-//! (`h ~ -sigma^2`), and vanishes at V_stick on both sides.
+//! h is `-e^2` at the bouncing channels (e = -V_out/V_in: linear in sigma at V_stick, where e^2
+//! grows from 0, and bounded far above it, where e tends to 1 in the JKR limit or falls as 1/V_in
+//! near the cliff) and `w |w|` with `w = V_out / V_stick > 0` at the double-collision channels;
+//! both vanish at V_stick.
 
 /// One node: its position, the threshold ratios there and `h` at every channel.
 #[derive(Debug, Clone, PartialEq)]

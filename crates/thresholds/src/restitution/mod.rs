@@ -9,7 +9,7 @@
 //! ```text
 //! bouncing    V_in >= V_stick:          sigma = ln(V_in / V_stick)                 in [0, 9.5]
 //! double      V_on < V_in <= V_stick:   nu = ln(V_stick / V_in) / ln(F / F_on)     in [0, 0.999]
-//! h = w |w|   (= 1 - e^(2 sigma) in the JKR limit, ~ -sigma^2 under strong damping)
+//! h = -e^2 (bouncing), w |w| with w = V_out / V_stick (double): smooth, 0 at V_stick
 //! ```
 //! and below V_on every collision sticks (e = 0). The tables hold h at fixed channels of sigma
 //! and nu on nodes of rows of constant y (in u = ln(x_s - x), as the master tables) for every
@@ -192,7 +192,8 @@ impl RestitutionTables {
         };
         let h = self.h(x, y, k, side, coord, true)?;
         Some(match side {
-            Side::Bouncing => (Outcome::Bouncing, -(-h).max(0.0).sqrt() * f),
+            // h = -e^2: V_out = -e V_in
+            Side::Bouncing => (Outcome::Bouncing, -(-h).max(0.0).sqrt() * s),
             Side::Double => (Outcome::DoubleCollision, h.max(0.0).sqrt() * f),
         })
     }
