@@ -2,9 +2,11 @@
 //!
 //! Project automation. `cargo xtask figures` regenerates the data of Figures 1-7 of Arakawa &
 //! Krijt (2021) into `data/fig*.csv` and draws `docs/figures/fig*.svg`; `cargo xtask figures
-//! --check` recomputes and compares with the committed data. No physics lives here: only the
+//! --check` recomputes and compares with the committed data; `cargo xtask test` runs every test;
+//! `cargo xtask docs` builds the documentation site into `target/site/`. No physics lives here: only the
 //! parameter grids of each figure, the CSV format and the pictures.
 
+pub mod docs;
 pub mod figures;
 pub mod master_table;
 pub mod python;

@@ -1,5 +1,6 @@
 //! `cargo xtask figures [--check]`: regenerate (or check) the paper's figures.
-//! `cargo xtask test`: every test, Rust and Python.
+//! `cargo xtask test`: every test, Rust and Python (and the documentation build).
+//! `cargo xtask docs`: the documentation site into target/site/.
 
 use clap::{Parser, Subcommand};
 use numerics::format::number;
@@ -64,7 +65,8 @@ enum Command {
         profile: String,
     },
     /// Run every test: `cargo test --workspace`, then the Python package in a virtual
-    /// environment under target/venv (built from crates/python) with pytest.
+    /// environment under target/venv (built from crates/python) with pytest, then the
+    /// documentation build with warnings as errors.
     Test {
         /// Only the Rust tests.
         #[arg(long, conflicts_with = "python_only")]
@@ -73,6 +75,9 @@ enum Command {
         #[arg(long)]
         python_only: bool,
     },
+    /// Build the documentation site (Sphinx: user guide, Python and CLI references, the
+    /// notebook; the Rust API from `cargo doc`) into target/site/, warnings as errors.
+    Docs,
 }
 
 fn main() -> ExitCode {
@@ -95,6 +100,9 @@ fn main() -> ExitCode {
             } else {
                 xtask::master_table::run_build(&workspace_root(), part, &only)
             }
+        }
+        Command::Docs => {
+            xtask::docs::build(&workspace_root(), xtask::docs::Package::Install).map(|_| ())
         }
         Command::Test {
             rust_only,

@@ -12,7 +12,9 @@
 //! 5. `pytest crates/python/tests` (with `STICKINESS_CLI` pointing at the binary of step 1 and
 //!    `STICKINESS_WHEEL` at the wheel, which one test installs into a fresh environment without
 //!    Rust; the tutorial notebook runs as a test), then the docstrings' examples
-//!    (`--doctest-modules`).
+//!    (`--doctest-modules`);
+//! 6. the documentation site (`cargo xtask docs`, [`crate::docs`]) on that wheel, with warnings
+//!    as errors: a renamed function, a broken cross-reference or a broken intra-doc link fails.
 //!
 //! It installs what it needs itself and fails loudly on anything missing; it never skips.
 
@@ -156,5 +158,6 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
             "--pyargs",
             "stickiness",
         ]))?;
+    crate::docs::build(root, crate::docs::Package::Installed)?;
     Ok(())
 }

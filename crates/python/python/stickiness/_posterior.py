@@ -174,7 +174,7 @@ class Posterior:
 
     def t_vis_at(self, monomer_radius: Any, *, exponent: float = SIZE_LAW_EXPONENT) -> np.ndarray:
         """The posterior T_vis samples (s) carried to ``monomer_radius`` (m) by the size law
-        T_vis ~ R1^exponent (Section 5.3) from :attr:`reference_radius`; shape (samples,) or
+        T_vis ~ R1^exponent (Section 5.3) from ``reference_radius``; shape (samples,) or
         (samples, radii)."""
         r = _args.float_array("monomer_radius", monomer_radius)
         if not np.all(np.isfinite(r) & (r > 0)):
@@ -197,7 +197,7 @@ class Posterior:
         """Quantiles of V_frag = 10 V_stick (m/s) of aggregates of monomers of
         ``monomer_radius`` (m) over the posterior (Section 6).
 
-        Each posterior T_vis is carried from :attr:`reference_radius` to the monomer size by the
+        Each posterior T_vis is carried from ``reference_radius`` to the monomer size by the
         size law T_vis ~ R1^exponent (Section 5.3), with its gamma_SV when that is free; the
         monomers are two identical spheres.
 

@@ -226,7 +226,7 @@ def vfrag_profile(
     posteriors : dict, optional
         ``{'co2': Posterior, 'h2o': Posterior}`` from :func:`stickiness.infer`: for those ices
         V_frag is the ``quantile`` of the posterior's V_frag, each T_vis sample carried to the
-        monomer size by the size law T_vis ~ R1^1.11 (:meth:`Posterior.v_frag`). The other ices
+        monomer size by the size law T_vis ~ R1^1.11 (:meth:`~stickiness.Posterior.v_frag`). The other ices
         keep the laws of Section 5.3.
     quantile : float, optional
         The posterior quantile (0..1), e.g. 0.16 and 0.84 to bracket a disc run by the data's

@@ -1,0 +1,148 @@
+//! `cargo xtask docs`: the documentation site, built into `target/site/` (open
+//! `target/site/index.html`).
+//!
+//! 1. `cargo build -p cli`: the `stickiness` binary, whose `--help` of every subcommand the CLI
+//!    reference page is generated from at build time (so it cannot drift);
+//! 2. `cargo doc --no-deps --workspace` with `RUSTDOCFLAGS="-D warnings"` (a broken intra-doc
+//!    link fails), copied into `target/site/rust/`;
+//! 3. the Sphinx tools ([`DOCS_REQUIREMENTS`]) in the test command's environment `target/venv`,
+//!    and the package itself (its wheel on the dev profile, as `cargo xtask test` installs it),
+//!    whose docstrings the API reference renders;
+//! 4. `sphinx-build` of `docs/site/` with warnings as errors (`-W --keep-going`), nitpicky (every
+//!    cross-reference must resolve), from a fresh environment (`-E`, so that a warning of an
+//!    unchanged page is never hidden by the cache);
+//! 5. a check that every link of the site into the Rust API lands on a page.
+//!
+//! `cargo xtask test` runs steps 1-5 after the Python tests, on the wheel it has just installed.
+
+use crate::python::Venv;
+use crate::test::{run, Error};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The Sphinx tools of the site (installed into `target/venv`).
+pub const DOCS_REQUIREMENTS: &[&str] = &[
+    "sphinx>=7.2,<10",
+    "furo>=2024.1",
+    "myst-parser>=2",
+    "myst-nb>=1.0",
+    "numpydoc>=1.6",
+];
+
+/// The site's sources, relative to the workspace root.
+pub const SOURCE_DIR: &str = "docs/site";
+
+/// Where the package the API reference documents comes from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Package {
+    /// Build the wheel (dev profile) and install it, as `cargo xtask test` does.
+    Install,
+    /// It is installed already (the test command has just installed its wheel).
+    Installed,
+}
+
+/// Builds the site into `root/target/site/` and returns the path of its `index.html`.
+pub fn build(root: &Path, package: Package) -> Result<PathBuf, Error> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let target = root.join("target");
+    run(Command::new(&cargo)
+        .current_dir(root)
+        .args(["build", "-p", "cli"]))?;
+    run(Command::new(&cargo)
+        .current_dir(root)
+        .env("RUSTDOCFLAGS", "-D warnings")
+        .args(["doc", "--no-deps", "--workspace"]))?;
+    let venv = Venv::open(root)?;
+    venv.pip(root, DOCS_REQUIREMENTS)?;
+    if package == Package::Install {
+        let wheel = crate::wheel::build(root, "dev")?;
+        let wheel_arg = wheel.to_string_lossy().into_owned();
+        venv.pip(root, &["--force-reinstall", "--no-deps", &wheel_arg])?;
+        venv.pip(root, &[&wheel_arg])?; // its dependencies, when missing
+    }
+    let site = target.join("site");
+    run(venv
+        .command(root)
+        .env("STICKINESS_CLI", target.join("debug").join("stickiness"))
+        .env("MPLBACKEND", "Agg")
+        .args([
+            "-m",
+            "sphinx",
+            "-b",
+            "html",
+            "-W",
+            "--keep-going",
+            "-n",
+            "-E",
+            "-q",
+        ])
+        .arg("-d")
+        .arg(target.join("site-doctrees"))
+        .arg(root.join(SOURCE_DIR))
+        .arg(&site))?;
+    let rust = site.join("rust");
+    if rust.exists() {
+        std::fs::remove_dir_all(&rust)?;
+    }
+    copy_dir(&target.join("doc"), &rust)?;
+    check_rust_links(&site)?;
+    let index = site.join("index.html");
+    eprintln!("the site is in {}", index.display());
+    Ok(index)
+}
+
+/// Copies the directory tree `from` to `to` (files only; `to` is created).
+fn copy_dir(from: &Path, to: &Path) -> Result<(), Error> {
+    std::fs::create_dir_all(to)?;
+    for entry in
+        std::fs::read_dir(from).map_err(|e| format!("cannot read {}: {e}", from.display()))?
+    {
+        let entry = entry?;
+        let dest = to.join(entry.file_name());
+        if entry.file_type()?.is_dir() {
+            copy_dir(&entry.path(), &dest)?;
+        } else {
+            std::fs::copy(entry.path(), &dest)?;
+        }
+    }
+    Ok(())
+}
+
+/// Every `href="rust/..."` (or `../rust/...`) of the site's top-level pages names a file that
+/// the copied rustdoc output holds: a renamed crate fails the build.
+fn check_rust_links(site: &Path) -> Result<(), Error> {
+    let mut missing = Vec::new();
+    let mut found = 0;
+    for entry in std::fs::read_dir(site)?.flatten() {
+        let page = entry.path();
+        if page.extension().is_none_or(|e| e != "html") {
+            continue;
+        }
+        let html = std::fs::read_to_string(&page)?;
+        for link in html.split("href=\"").skip(1) {
+            let Some(target) = link.split('"').next() else {
+                continue;
+            };
+            let Some(rest) = target.strip_prefix("rust/") else {
+                continue;
+            };
+            found += 1;
+            let file = rest.split('#').next().unwrap_or(rest);
+            if !site.join("rust").join(file).is_file() {
+                missing.push(format!("{}: {target}", page.display()));
+            }
+        }
+    }
+    if found == 0 {
+        return Err("no page of the site links into the Rust API (target/site/rust/)".into());
+    }
+    if missing.is_empty() {
+        Ok(())
+    } else {
+        Err(format!(
+            "links into the Rust API that land nowhere:\n  {}",
+            missing.join("\n  ")
+        )
+        .into())
+    }
+}
