@@ -43,6 +43,11 @@ enum Command {
         /// With `--part tables`: only the tables of these indices (k = 0.005 2^(i/3)).
         #[arg(long, value_delimiter = ',')]
         only: Vec<usize>,
+        /// With `--part tables`: the lowest row, instead of y = -6 (log10 c_D c_a). Below -4.5
+        /// lies the second kind of bouncing, whose rows cost one to three times the rest of a
+        /// table; the tables answer with the search there until it is built.
+        #[arg(long, allow_hyphen_values = true)]
+        y_min: Option<f64>,
     },
     /// Build the restitution tables (V_out and e of single collisions over the two
     /// dimensionless numbers, k and the impact speed) with the ODE, on the committed master
@@ -94,11 +99,16 @@ fn main() -> ExitCode {
                 xtask::restitution_table::run_build(&workspace_root(), &only)
             }
         }
-        Command::MasterTable { check, part, only } => {
+        Command::MasterTable {
+            check,
+            part,
+            only,
+            y_min,
+        } => {
             if check {
                 xtask::master_table::run_check(&workspace_root())
             } else {
-                xtask::master_table::run_build(&workspace_root(), part, &only)
+                xtask::master_table::run_build(&workspace_root(), part, &only, y_min)
             }
         }
         Command::Docs => {

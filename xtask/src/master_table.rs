@@ -108,10 +108,26 @@ pub fn committed_tables(root: &Path) -> Result<Vec<TableData>, Error> {
         .collect()
 }
 
-/// Builds `part` (and `only` these table indices, if given) and writes it.
-pub fn run_build(root: &Path, part: Part, only: &[usize]) -> Result<(), Error> {
+/// Builds `part` (and `only` these table indices, if given; tables from the row `y_min` up, if
+/// given) and writes it.
+pub fn run_build(
+    root: &Path,
+    part: Part,
+    only: &[usize],
+    y_min: Option<f64>,
+) -> Result<(), Error> {
     let start = Instant::now();
-    let cfg = BuildConfig::standard();
+    let mut cfg = BuildConfig::standard();
+    if let Some(y) = y_min {
+        if !(y >= cfg.y_range.0 && y < cfg.y_range.1 && (y * 2.0).fract() == 0.0) {
+            return Err(format!(
+                "--y-min = {y}: must be a multiple of 0.5 from {} to below {}",
+                cfg.y_range.0, cfg.y_range.1
+            )
+            .into());
+        }
+        cfg.y_range.0 = y;
+    }
     let stamp = [
         "command: cargo xtask master-table".to_string(),
         format!("commit: {}", commit(root)),

@@ -4,7 +4,12 @@
 //!
 //! ```sh
 //! cargo run --release -p thresholds --example table_accuracy -- 20000 2000
+//! cargo run --release -p thresholds --example table_accuracy -- 20000 2000 answered
 //! ```
+//! With `answered`, k is drawn from what the committed tables answer (log-uniform over their
+//! range once the k checks cover it, else one of the tables' own k), to measure the tables
+//! where they exist; without it, the tables' coverage of the whole k range 0.005-0.05 is
+//! counted first (without searching the points they decline).
 //! Each point draws gamma_SV (0.01-0.3 J/m^2), E (0.5-200 GPa), the density (500-5000 kg/m^3),
 //! the reduced radius R (5 nm - 1 cm) and k (0.005-0.05) log-uniformly, nu (0.1-0.45)
 //! uniformly, two identical spheres (R1 = 2R) or a sphere on a wall (R1 = R), and T_vis
@@ -17,8 +22,8 @@
 use rayon::prelude::*;
 use std::time::Instant;
 use thresholds::{
-    sticking_thresholds, Contact, CrackLaw, Geometry, Material, SearchOptions, StickingThresholds,
-    ThresholdMethod,
+    sticking_thresholds, Contact, CrackLaw, Geometry, Material, MasterTables, SearchOptions,
+    StickingThresholds, ThresholdMethod,
 };
 
 /// A small deterministic generator (SplitMix64), so that a run is repeatable.
@@ -43,7 +48,19 @@ struct Point {
     t_vis: f64,
 }
 
-fn draw(rng: &mut Rng) -> Point {
+/// A k the committed tables answer (as `tests/master_table.rs` draws it).
+fn answered_k(rng: &mut Rng) -> f64 {
+    let tables = MasterTables::standard();
+    let (lo, hi) = tables.k_range();
+    if tables.k_checked() {
+        rng.log_uniform(lo, hi)
+    } else {
+        let ks = tables.table_k();
+        ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+    }
+}
+
+fn draw(rng: &mut Rng, answered: bool) -> Point {
     let m = Material {
         gamma_sv: rng.log_uniform(0.01, 0.3),
         young: rng.log_uniform(0.5e9, 200e9),
@@ -56,9 +73,14 @@ fn draw(rng: &mut Rng) -> Point {
     } else {
         Geometry::identical(2.0 * r)
     };
+    let k = if answered {
+        answered_k(rng)
+    } else {
+        rng.log_uniform(0.005, 0.05)
+    };
     Point {
         contact: Contact::new(m, geometry).unwrap(),
-        k: rng.log_uniform(0.005, 0.05),
+        k,
         t_vis: rng.log_uniform(1e-16, 1e-3),
     }
 }
@@ -74,8 +96,31 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let n: usize = args.next().map_or(20000, |s| s.parse().unwrap());
     let sample: usize = args.next().map_or(2000, |s| s.parse().unwrap());
+    let answered = args.next().as_deref() == Some("answered");
     let mut rng = Rng(2026);
-    let points: Vec<Point> = (0..n).map(|_| draw(&mut rng)).collect();
+    let points: Vec<Point> = (0..n).map(|_| draw(&mut rng, answered)).collect();
+    if !answered {
+        // coverage of the whole domain, without searching what the tables decline
+        let tables = MasterTables::standard();
+        let start = Instant::now();
+        let covered = points
+            .iter()
+            .filter(|p| {
+                let d = p.contact.dimensionless(p.t_vis);
+                let jkr = p.contact.v_stick_jkr();
+                let f_max = SearchOptions::default().v_max_for(jkr) / jkr;
+                tables.ratios(d.c_d, d.c_a, p.k, f_max).is_some()
+            })
+            .count();
+        println!(
+            "coverage: the tables answer {covered} of {n} points of the whole domain ({:.3} %), k 0.005-0.05 ({:.2} s, one thread); committed tables at k = {:?}, k checks: {}",
+            100.0 * covered as f64 / n as f64,
+            start.elapsed().as_secs_f64(),
+            tables.table_k(),
+            tables.k_checked()
+        );
+        return;
+    }
     let laws: Vec<CrackLaw> = points.iter().map(|p| CrackLaw::new(p.k).unwrap()).collect();
     let start = Instant::now();
     let answers: Vec<Option<StickingThresholds>> = points
