@@ -22,7 +22,7 @@
 use rayon::prelude::*;
 use std::time::Instant;
 use thresholds::{
-    sticking_thresholds, Contact, CrackLaw, Geometry, Material, MasterTables, SearchOptions,
+    sticking_thresholds, Contact, CrackLaw, Geometry, MasterTables, Material, SearchOptions,
     StickingThresholds, ThresholdMethod,
 };
 
