@@ -43,6 +43,7 @@ pub enum Package {
 
 /// Builds the site into `root/target/site/` and returns the path of its `index.html`.
 pub fn build(root: &Path, package: Package) -> Result<PathBuf, Error> {
+    let start = std::time::Instant::now();
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let target = root.join("target");
     run(Command::new(&cargo)
@@ -87,7 +88,11 @@ pub fn build(root: &Path, package: Package) -> Result<PathBuf, Error> {
     copy_dir(&target.join("doc"), &rust)?;
     check_rust_links(&site)?;
     let index = site.join("index.html");
-    eprintln!("the site is in {}", index.display());
+    eprintln!(
+        "the site is in {} ({:.0} s)",
+        index.display(),
+        start.elapsed().as_secs_f64()
+    );
     Ok(index)
 }
 
