@@ -110,12 +110,7 @@ pub fn committed_tables(root: &Path) -> Result<Vec<TableData>, Error> {
 
 /// Builds `part` (and `only` these table indices, if given; tables from the row `y_min` up, if
 /// given) and writes it.
-pub fn run_build(
-    root: &Path,
-    part: Part,
-    only: &[usize],
-    y_min: Option<f64>,
-) -> Result<(), Error> {
+pub fn run_build(root: &Path, part: Part, only: &[usize], y_min: Option<f64>) -> Result<(), Error> {
     let start = Instant::now();
     let mut cfg = BuildConfig::standard();
     if let Some(y) = y_min {

@@ -64,7 +64,13 @@ fn side(e: Eval, f_max: f64) -> Side {
 
 /// The tables that answer at k: one (k is a table's own) or four around k in ln k, with the
 /// interval of k between two tables (for the k checks). Fixed arrays: no allocation per answer.
+/// A plain pair kept: `((y, x), [g F, g F_on])`.
+type PlainPair = ((f64, f64), Option<[f64; 2]>);
+
 struct KStencil<'a> {
+    /// The last plain pair asked for: F and F_on are asked at the same point, and one search
+    /// along each row serves both.
+    plain: std::cell::Cell<Option<PlainPair>>,
     tables: [&'a Table; 4],
     /// How many of `tables` (and `ln_k`) are used: 1 or 4.
     n: usize,
@@ -91,6 +97,35 @@ impl KStencil<'_> {
             lagrange(&self.ln_k, &v, ln_k)
         })
     }
+
+    /// `[g F, g F_on]` in plain x at (x, y), combined at `ln_k` (kept for the next call).
+    fn plain_both(&self, ln_k: f64, y: f64, x: f64) -> Option<[f64; 2]> {
+        if let Some((at, g)) = self.plain.get() {
+            if at == (y, x) {
+                return g;
+            }
+        }
+        let mut v = [[0.0; 4]; 2];
+        let mut ok = true;
+        for (q, t) in self.tables().iter().enumerate() {
+            match t.g_plain_both(y, x) {
+                Some([a, b]) => (v[0][q], v[1][q]) = (a, b),
+                None => ok = false,
+            }
+        }
+        let g = ok.then(|| {
+            if self.n == 1 {
+                [v[0][0], v[1][0]]
+            } else {
+                [
+                    lagrange(&self.ln_k, &v[0], ln_k),
+                    lagrange(&self.ln_k, &v[1], ln_k),
+                ]
+            }
+        });
+        self.plain.set(Some(((y, x), g)));
+        g
+    }
 }
 
 impl MasterTables {
@@ -99,6 +134,7 @@ impl MasterTables {
         if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
             let t = self.table(i)?;
             return Some(KStencil {
+                plain: Default::default(),
                 tables: [t; 4],
                 n: 1,
                 ln_k: [k.ln(); 4],
@@ -112,6 +148,7 @@ impl MasterTables {
         let i = (1..n).find(|&i| ks[i] > k).map_or(n - 2, |i| i - 1);
         let s = stencil_start(i, n);
         Some(KStencil {
+            plain: Default::default(),
             tables: [
                 self.table(s)?,
                 self.table(s + 1)?,
@@ -170,7 +207,10 @@ impl MasterTables {
                 Some(hi)
             })
             .flatten();
-        let g_plain = |x: f64| ks.combine(ln_k, |t| t.g_plain(curve, y, x));
+        let g_plain = |x: f64| {
+            let v = usize::from(curve != Curve::Stick);
+            ks.plain_both(ln_k, y, x).map(|g| g[v])
+        };
         if let Some(hi) = plain {
             if x <= hi {
                 return g_plain(x).map_or(Eval::Unknown, Eval::Value);

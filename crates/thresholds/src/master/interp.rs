@@ -20,8 +20,11 @@ pub(crate) fn stencil_start(i: usize, n: usize) -> usize {
 }
 
 /// The value at `x` of the polynomial through `(xs[j], ys[j])` (Lagrange form; 2 to 4 points).
-/// One division per node (numerator and denominator products apart): the answer's hot loop.
 pub(crate) fn lagrange(xs: &[f64], ys: &[f64], x: f64) -> f64 {
+    if xs.len() == 4 {
+        let w = weights4(xs, x);
+        return w[0] * ys[0] + w[1] * ys[1] + w[2] * ys[2] + w[3] * ys[3];
+    }
     let mut sum = 0.0;
     for (j, (&xj, &yj)) in xs.iter().zip(ys).enumerate() {
         let (mut num, mut den) = (1.0, 1.0);
@@ -36,6 +39,19 @@ pub(crate) fn lagrange(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     sum
 }
 
+/// The cubic Lagrange weights of the four nodes `xs` at `x`, written out (the answer's hot
+/// loop: one division a node, no branches).
+pub(crate) fn weights4(xs: &[f64], x: f64) -> [f64; 4] {
+    let (x0, x1, x2, x3) = (xs[0], xs[1], xs[2], xs[3]);
+    let (d0, d1, d2, d3) = (x - x0, x - x1, x - x2, x - x3);
+    [
+        d1 * d2 * d3 / ((x0 - x1) * (x0 - x2) * (x0 - x3)),
+        d0 * d2 * d3 / ((x1 - x0) * (x1 - x2) * (x1 - x3)),
+        d0 * d1 * d3 / ((x2 - x0) * (x2 - x1) * (x2 - x3)),
+        d0 * d1 * d2 / ((x3 - x0) * (x3 - x1) * (x3 - x2)),
+    ]
+}
+
 /// The local cubic through the four nodes around `x` of `(xs, ys)` (`xs` increasing, at least
 /// two nodes; fewer than four give a lower degree).
 pub(crate) fn local_cubic(xs: &[f64], ys: &[f64], x: f64) -> f64 {
@@ -43,6 +59,22 @@ pub(crate) fn local_cubic(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     let s = stencil_start(interval(xs, x), n);
     let e = (s + 4).min(n);
     lagrange(&xs[s..e], &ys[s..e], x)
+}
+
+/// [`local_cubic`] of two value arrays on the same nodes, with one search for the interval.
+pub(crate) fn local_cubic_both(xs: &[f64], ys: [&[f64]; 2], x: f64) -> [f64; 2] {
+    let n = xs.len();
+    let s = stencil_start(interval(xs, x), n);
+    let e = (s + 4).min(n);
+    if e - s == 4 {
+        let w = weights4(&xs[s..e], x);
+        let dot = |v: &[f64]| w[0] * v[s] + w[1] * v[s + 1] + w[2] * v[s + 2] + w[3] * v[s + 3];
+        return [dot(ys[0]), dot(ys[1])];
+    }
+    [
+        lagrange(&xs[s..e], &ys[0][s..e], x),
+        lagrange(&xs[s..e], &ys[1][s..e], x),
+    ]
 }
 
 /// The first of the four nodes of a uniform grid of `n` nodes (at 0, 1, ..., n - 1) around the

@@ -15,7 +15,7 @@
 //! plain up to an x, sheared down to a distance to the end.
 
 use super::format::{self, Piece, Table};
-use super::interp::{interval, lagrange, local_cubic, stencil_start};
+use super::interp::{interval, lagrange, local_cubic, local_cubic_both, stencil_start};
 
 /// Which piece of the rows, and which ratio.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -131,6 +131,25 @@ impl Table {
         }
         let g = lagrange(&self.ys[s..s + 4], &g, y);
         g.is_finite().then_some(g)
+    }
+
+    /// [`Table::g_plain`] of F and F_on together (one search along each row): `[g F, g F_on]`.
+    pub fn g_plain_both(&self, y: f64, x: f64) -> Option<[f64; 2]> {
+        let (s, _) = self.stencil(y)?;
+        let mut g = [[0.0; 4]; 2];
+        for (q, row) in self.rows[s..s + 4].iter().enumerate() {
+            let p = &row.body;
+            let far = *p.u.last()?;
+            let u = (row.x_s - x).ln().min(far);
+            if !u.is_finite() {
+                return None;
+            }
+            let [a, b] = local_cubic_both(&p.u, [&p.g[0], &p.g[1]], u);
+            (g[0][q], g[1][q]) = (a, b);
+        }
+        let ys = &self.ys[s..s + 4];
+        let both = [lagrange(ys, &g[0], y), lagrange(ys, &g[1], y)];
+        both.iter().all(|g| g.is_finite()).then_some(both)
     }
 
     /// Whether every row of the stencil at `y` has ratios that increase towards the end (and
