@@ -63,7 +63,7 @@ impl FigureMaster {
     pub fn compute(res: Resolution, progress: Progress) -> Result<Self, Error> {
         let tables = MasterTables::standard();
         let ends = tables.ends().ok_or("the master tables are not embedded")?;
-        let x = linspace(-13.0, 1.0, res.pick(281, 5));
+        let x = linspace(-17.0, 1.0, res.pick(361, 5));
         let y = linspace(-5.75, 5.0, res.pick(87, 4));
         let f = par_map("fig_master", &y, progress, |&y| {
             Ok(x.iter()
@@ -192,9 +192,7 @@ impl FigureMaster {
             .legend(legend_line(BLACK));
         chart
             .draw_series(std::iter::empty::<Circle<(f64, f64), i32>>())?
-            .label(
-                "white: F > 1000 (no bouncing below the default limit) or a thin band at the cliff",
-            )
+            .label("white: F > 1000 (the default limit), or the thin band at the cliff")
             .legend(|(x, y)| Rectangle::new([(x, y - 5), (x + 20, y + 5)], WHITE.filled()));
         for (g, col) in self.grains.iter().zip([COLOURS[0], COLOURS[1]]) {
             let times: Vec<String> = g.marks.iter().map(|m| number(m.0)).collect();
@@ -212,7 +210,7 @@ impl FigureMaster {
                     .map(|m| Circle::new((m.1, g.y), 4, col.filled())),
             )?;
         }
-        legend(&mut chart, SeriesLabelPosition::UpperLeft)?;
+        legend(&mut chart, SeriesLabelPosition::LowerLeft)?;
         root.present()?;
         Ok(())
     }
