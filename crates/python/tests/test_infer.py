@@ -231,3 +231,45 @@ def test_importing_stickiness_needs_no_emcee():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     assert "pip install 'stickiness[infer]'" in out.stdout, out.stderr
+
+
+def _data(kinds):
+    """Data made with the model at 3e-10 s (CO2, 60 um): V_stick +- 10 %, eight sticking
+    outcomes around it, e of three bouncing collisions +- 0.02."""
+    truth = st.v_stick(CO2, R, 3e-10).v_stick
+    out = {}
+    if "v_stick" in kinds:
+        out["v_stick"] = (truth, 0.1 * truth)
+    if "sticking" in kinds:
+        v = truth * np.geomspace(0.5, 2.0, 8)
+        out["sticking"] = (v, v < truth)
+    if "restitution" in kinds:
+        v = truth * np.array([1.5, 2.5, 4.0])
+        out["restitution"] = (v, st.collide(CO2, R, 3e-10, v).e_observed, np.full(3, 0.02))
+    return out
+
+
+KINDS = [("v_stick",), ("sticking",), ("restitution",), ("v_stick", "sticking"),
+         ("v_stick", "restitution"), ("sticking", "restitution"),
+         ("v_stick", "sticking", "restitution")]
+
+
+@pytest.mark.parametrize("kinds", KINDS, ids=["+".join(k) for k in KINDS])
+@pytest.mark.parametrize("sizes", ["one radius", "a sample"])
+def test_every_combination_of_data_runs(kinds, sizes):
+    # every data kind alone and together, one radius or a SizeDistribution; the wall and one or
+    # two free parameters alternate over the cases. A short chain: what is checked is that the
+    # posterior is made (finite samples inside the prior, the free parameters as columns), not
+    # its width (the recovery tests above do that)
+    i = KINDS.index(kinds)
+    radius = R if sizes == "one radius" else st.SizeDistribution([50e-6, 60e-6, 70e-6])
+    free = ("t_vis", "gamma_sv") if i % 2 else ("t_vis",)
+    wall = bool((i + (sizes == "a sample")) % 2)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", st.StickinessWarning)
+        warnings.simplefilter("ignore", RuntimeWarning)  # emcee's autocorrelation of 8 steps
+        post = st.infer(CO2, radius, **_data(kinds), free=free, wall=wall, walkers=8, steps=12,
+                        burn=4, seed=i)
+    assert list(post.samples.columns) == list(free)
+    t = post.samples["t_vis"].to_numpy()
+    assert np.all(np.isfinite(t)) and np.all(t > 0)
