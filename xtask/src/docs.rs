@@ -13,7 +13,8 @@
 //!    unchanged page is never hidden by the cache);
 //! 5. a check that every link of the site into the Rust API lands on a page.
 //!
-//! `cargo xtask test` runs steps 1-5 after the Python tests, on the wheel it has just installed.
+//! `cargo xtask test` runs steps 1-5 after the Python tests, on the wheel it has just installed,
+//! with step 2 started before pytest and run alongside it ([`RustDoc`]).
 
 use crate::python::Venv;
 use crate::test::{run, Error};
@@ -41,18 +42,74 @@ pub enum Package {
     Installed,
 }
 
-/// Builds the site into `root/target/site/` and returns the path of its `index.html`.
-pub fn build(root: &Path, package: Package) -> Result<PathBuf, Error> {
+/// `cargo doc --no-deps --workspace` with `RUSTDOCFLAGS="-D warnings"`.
+fn rustdoc(root: &Path) -> Command {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let mut cmd = Command::new(cargo);
+    cmd.current_dir(root)
+        .env("RUSTDOCFLAGS", "-D warnings")
+        .args(["doc", "--no-deps", "--workspace"]);
+    cmd
+}
+
+/// The Rust API's documentation building in the background (its output in
+/// `target/rustdoc.log`), for `cargo xtask test` to overlap it with pytest: on a fresh clone
+/// rustdoc first compiles every dependency in check mode (about 2.5 minutes on 2 cores), which
+/// the test build does not share.
+pub struct RustDoc {
+    child: std::process::Child,
+    log: PathBuf,
+}
+
+impl RustDoc {
+    /// Starts `cargo doc`; nothing else may run cargo until [`RustDoc::wait`] (the build
+    /// directory's lock would serialise them).
+    pub fn start(root: &Path) -> Result<RustDoc, Error> {
+        let log = root.join("target").join("rustdoc.log");
+        let file = std::fs::File::create(&log)?;
+        eprintln!(
+            "+ cargo doc --no-deps --workspace (in the background, log: {})",
+            log.display()
+        );
+        let child = rustdoc(root)
+            .stdout(file.try_clone()?)
+            .stderr(file)
+            .spawn()
+            .map_err(|e| format!("cannot start cargo doc: {e}"))?;
+        Ok(RustDoc { child, log })
+    }
+
+    /// Waits for it; an error with its log when it failed.
+    pub fn wait(mut self) -> Result<(), Error> {
+        let status = self.child.wait()?;
+        if status.success() {
+            return Ok(());
+        }
+        let log = std::fs::read_to_string(&self.log).unwrap_or_default();
+        Err(
+            format!("`cargo doc --no-deps --workspace` (-D warnings) failed ({status}):\n{log}")
+                .into(),
+        )
+    }
+}
+
+/// Builds the site into `root/target/site/` and returns the path of its `index.html`; with
+/// `rustdoc`, the Rust API's build started earlier is waited for instead of run here.
+pub fn build(
+    root: &Path,
+    package: Package,
+    rustdoc_started: Option<RustDoc>,
+) -> Result<PathBuf, Error> {
     let start = std::time::Instant::now();
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let target = root.join("target");
+    match rustdoc_started {
+        Some(started) => started.wait()?,
+        None => run(&mut rustdoc(root))?,
+    }
     run(Command::new(&cargo)
         .current_dir(root)
         .args(["build", "-p", "cli"]))?;
-    run(Command::new(&cargo)
-        .current_dir(root)
-        .env("RUSTDOCFLAGS", "-D warnings")
-        .args(["doc", "--no-deps", "--workspace"]))?;
     let venv = Venv::open(root)?;
     venv.pip(root, DOCS_REQUIREMENTS)?;
     if package == Package::Install {

@@ -112,7 +112,7 @@ fn main() -> ExitCode {
             }
         }
         Command::Docs => {
-            xtask::docs::build(&workspace_root(), xtask::docs::Package::Install).map(|_| ())
+            xtask::docs::build(&workspace_root(), xtask::docs::Package::Install, None).map(|_| ())
         }
         Command::Test {
             rust_only,

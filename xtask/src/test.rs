@@ -139,6 +139,8 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
     let wheel = crate::wheel::build(root, "dev")?;
     let wheel_arg = wheel.to_string_lossy().into_owned();
     venv.pip(root, &["--force-reinstall", "--no-deps", &wheel_arg])?;
+    // the Rust API's docs build alongside pytest (no cargo runs until the docs step)
+    let rustdoc = crate::docs::RustDoc::start(root)?;
     let cli = root.join("target").join("debug").join("stickiness");
     run(venv
         .command(root)
@@ -158,6 +160,6 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
             "--pyargs",
             "stickiness",
         ]))?;
-    crate::docs::build(root, crate::docs::Package::Installed)?;
+    crate::docs::build(root, crate::docs::Package::Installed, Some(rustdoc))?;
     Ok(())
 }
