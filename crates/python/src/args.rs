@@ -100,19 +100,35 @@ impl<'a> Elements<'a> {
         }
     }
 
-    /// The contact of element `i` (its gamma_sv, if given per element).
+    /// The contact of element `i` (its gamma_sv, if given per element); the last one made on
+    /// this thread is reused when element `i` has the same inputs (a scalar radius broadcast
+    /// over T_vis, a sampler's walkers at one radius): a contact costs a third of a table answer.
     pub fn contact(&self, i: usize) -> Result<Contact, Error> {
         let mut m = self.material.inner;
         if let Some(g) = self.gamma_sv {
             m.gamma_sv = g[i];
         }
-        Contact::new(m, self.geometry(i)).map_err(|e| Error::from_contact(e, i))
+        let g = self.geometry(i);
+        if let Some((pm, pg, pc)) = LAST_CONTACT.with(|c| c.get()) {
+            if pm == m && pg == g {
+                return Ok(pc);
+            }
+        }
+        let c = Contact::new(m, g).map_err(|e| Error::from_contact(e, i))?;
+        LAST_CONTACT.with(|last| last.set(Some((m, g, c))));
+        Ok(c)
     }
 
     /// The crack law of element `i`'s k.
     pub fn law(&self, i: usize) -> Result<&CrackLaw, Error> {
         self.laws.get(self.k[i], i)
     }
+}
+
+thread_local! {
+    /// The last contact made on this thread, with its material and geometry.
+    static LAST_CONTACT: std::cell::Cell<Option<(thresholds::Material, Geometry, Contact)>> =
+        const { std::cell::Cell::new(None) };
 }
 
 /// One `CrackLaw` per distinct k (each table takes 0.17 ms to build and is shared).

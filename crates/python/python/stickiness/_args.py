@@ -237,7 +237,7 @@ class Broadcast:
     def out(self, flat: Any) -> Any:
         """A flat result as a Python scalar (scalar inputs) or an array of the broadcast shape."""
         if self.scalar:
-            return flat[0].item() if type(flat) is np.ndarray else flat[0]
+            return flat.item(0) if type(flat) is np.ndarray else flat[0]
         return np.asarray(flat).reshape(self.shape)
 
     def methods(self, codes: Any) -> Any:
