@@ -9,7 +9,9 @@ use numerics::format::number;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use thresholds::master::build::cells::build_table;
-use thresholds::master::build::check::{check_ends, check_nodes, Recomputed};
+use thresholds::master::build::check::{
+    check_ends, check_nodes, END_TOL, ILL_CONDITIONED_BELOW_Y, ILL_CONDITIONED_TOL, NODE_REL_TOL,
+};
 use thresholds::master::build::ends::{build_ends, repair_ends};
 use thresholds::master::build::kcheck::k_checks;
 use thresholds::master::build::BuildConfig;
@@ -22,15 +24,6 @@ pub const CHECK_EVERY: usize = 250;
 
 /// `--check` recomputes every this-many-th point of the end curves (about 40 of 33 000).
 pub const CHECK_ENDS_EVERY: usize = 800;
-
-/// A recomputed node must equal the committed one to this relative tolerance: a node is the
-/// search without a hint, which is deterministic, so any change comes from the model or its
-/// numerics (the file keeps 12 significant figures).
-pub const CHECK_REL_TOL: f64 = 1e-10;
-
-/// A recomputed end point must equal the committed one to this (in x): the root is found anew
-/// from another first bracket, to 1e-11.
-pub const CHECK_END_TOL: f64 = 1e-9;
 
 /// Which part to build.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
@@ -171,16 +164,12 @@ pub fn run_build(root: &Path, part: Part, only: &[usize], y_min: Option<f64>) ->
     Ok(())
 }
 
-fn first_moved(all: &[Recomputed], tol: impl Fn(&Recomputed) -> bool) -> Option<&Recomputed> {
-    all.iter().find(|r| !tol(r))
-}
-
 /// Recomputes a sample of the committed tables' nodes and end points; an error naming the first
 /// that moved.
 pub fn run_check(root: &Path) -> Result<(), Error> {
     let ends = committed_ends(root)?;
     let checked = check_ends(&ends, CHECK_ENDS_EVERY)?;
-    if let Some(r) = first_moved(&checked, |r| (r.now - r.stored).abs() <= CHECK_END_TOL) {
+    if let Some(r) = checked.iter().find(|r| r.moved()) {
         return Err(format!(
             "the master tables' end curves are stale: {} is {}, the model now gives {}; run `cargo xtask master-table`",
             r.what, r.stored, r.now
@@ -188,9 +177,11 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
         .into());
     }
     eprintln!(
-        "master-table --check: {} end points recomputed, all within {}",
+        "master-table --check: {} end points recomputed, all within {} ({} below y = {}, where the roots are ill-conditioned)",
         checked.len(),
-        number(CHECK_END_TOL)
+        number(END_TOL),
+        number(ILL_CONDITIONED_TOL),
+        number(ILL_CONDITIONED_BELOW_Y)
     );
     let tables = committed_tables(root)?;
     let intervals = ends.kcheck.len() / ends.kcheck_y.2.max(1);
@@ -204,9 +195,7 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
     }
     for t in tables {
         let checked = check_nodes(&t, CHECK_EVERY)?;
-        if let Some(r) = first_moved(&checked, |r| {
-            (r.now / r.stored - 1.0).abs() <= CHECK_REL_TOL
-        }) {
+        if let Some(r) = checked.iter().find(|r| r.moved()) {
             return Err(format!(
                 "the master table of k = {} is stale: {} is {}, the model now gives {}; run `cargo xtask master-table`",
                 t.k, r.what, r.stored, r.now
@@ -217,7 +206,7 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
             "master-table --check: k = {}: {} values recomputed, all within {}",
             t.k,
             checked.len(),
-            number(CHECK_REL_TOL)
+            number(NODE_REL_TOL)
         );
     }
     Ok(())
