@@ -1,13 +1,17 @@
 //! Turns the committed master tables (`data/master_k<k>.csv`, `data/master_ends.csv`, text) into
 //! their binary form (`$OUT_DIR/master.bin`), which the library embeds: reading it at run time
-//! is copying numbers, so the first answer from the tables costs microseconds, not the
-//! milliseconds of parsing the text. The reader is the library's own (`src/master/format.rs`).
+//! is copying numbers (about 1 ms for the end curves and one table), not parsing text. The
+//! reader and writer are the library's own (`src/master/format.rs`, `src/master/binary.rs`).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 #[allow(dead_code)]
 #[path = "src/master/format.rs"]
 mod format;
+
+#[allow(dead_code)]
+#[path = "src/master/binary.rs"]
+mod binary;
 
 #[allow(dead_code)]
 #[path = "src/restitution/format.rs"]
@@ -18,6 +22,7 @@ use std::path::{Path, PathBuf};
 fn main() {
     let data = Path::new("data");
     println!("cargo:rerun-if-changed=src/master/format.rs");
+    println!("cargo:rerun-if-changed=src/master/binary.rs");
     println!("cargo:rerun-if-changed=src/restitution/format.rs");
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed=data");
@@ -85,5 +90,5 @@ fn read(data: &Path) -> Result<Vec<u8>, String> {
         tables.push(t);
     }
     tables.sort_by(|a, b| a.k.total_cmp(&b.k));
-    Ok(format::to_bytes(&tables, &ends))
+    Ok(binary::to_bytes(&tables, &ends))
 }

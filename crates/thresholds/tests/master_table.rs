@@ -8,7 +8,8 @@
 
 use contact::{Contact, Geometry, Material};
 use greenwood::CrackLaw;
-use thresholds::master::format::{parse_ends, parse_table, Table};
+use thresholds::master::binary::Table;
+use thresholds::master::format::{parse_ends, parse_table};
 use thresholds::master::MasterTables;
 use thresholds::paper::MUSIOLIK_2016A;
 use thresholds::{

@@ -13,7 +13,8 @@
 //!    bouncing / no double collision below v_max), or within [`V_MAX_MARGIN`] of it (the search
 //!    decides).
 
-use super::format::{Table, F_TOP};
+use super::binary::Table;
+use super::format::F_TOP;
 use super::interp::{lagrange, stencil_start};
 use super::table::Curve;
 use super::MasterTables;

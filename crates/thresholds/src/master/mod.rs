@@ -53,6 +53,7 @@
 //! ```
 
 mod answer;
+pub mod binary;
 pub mod build;
 pub mod ends;
 mod file;
@@ -60,7 +61,8 @@ pub mod format;
 pub(crate) mod interp;
 mod table;
 
-use format::{EndsData, Table};
+use binary::Table;
+use format::EndsData;
 use std::sync::OnceLock;
 
 pub(crate) use answer::from_table;
@@ -104,9 +106,9 @@ impl MasterTables {
         STANDARD.get_or_init(|| MasterTables::from_bytes(BYTES))
     }
 
-    /// Tables from their binary form ([`format::to_bytes`]); empty where it cannot be read.
+    /// Tables from their binary form ([`binary::to_bytes`]); empty where it cannot be read.
     pub fn from_bytes(bytes: &'static [u8]) -> MasterTables {
-        let index = format::index(bytes).unwrap_or_default();
+        let index = binary::index(bytes).unwrap_or_default();
         MasterTables {
             bytes,
             k: index.iter().map(|e| e.0).collect(),
@@ -147,14 +149,14 @@ impl MasterTables {
     pub fn table(&self, i: usize) -> Option<&Table> {
         self.tables
             .get(i)?
-            .get_or_init(|| format::table_from_bytes(self.bytes, i))
+            .get_or_init(|| binary::table_from_bytes(self.bytes, i))
             .as_ref()
     }
 
     /// The end curves.
     pub fn ends(&self) -> Option<&EndCurves> {
         self.ends
-            .get_or_init(|| format::ends_from_bytes(self.bytes).map(EndCurves::new))
+            .get_or_init(|| binary::ends_from_bytes(self.bytes).map(EndCurves::new))
             .as_ref()
     }
 

@@ -1,6 +1,6 @@
 //! One k's table: a ratio at a point, where the table vouches for it.
 //!
-//! Each row of constant y holds two pieces ([`format::Piece`]): the *body* (x below x_s, F and
+//! Each row of constant y holds two pieces ([`binary::Piece`]): the *body* (x below x_s, F and
 //! F_on, interpolated in u = ln(x_s - x)) and the *strip* (x between x_s and x_on, F_on only, in
 //! w = ln(x_on - x)). Each row is interpolated by the local cubic in its own coordinate, then
 //! the four rows around y by the cubic in y, in one of two ways:
@@ -14,7 +14,7 @@
 //! Each is vouched for where every row and the cell between the two middle rows were checked:
 //! plain up to an x, sheared down to a distance to the end.
 
-use super::format::{self, Piece, Table};
+use super::binary::{self, Piece, Table};
 use super::interp::{interval, lagrange, local_cubic, local_cubic_both, stencil_start};
 
 /// Which piece of the rows, and which ratio.
@@ -38,7 +38,7 @@ impl Curve {
         }
     }
 
-    fn piece(self, row: &format::Row) -> &Piece {
+    fn piece(self, row: &binary::Row) -> &Piece {
         match self {
             Curve::OnsetStrip => &row.strip,
             _ => &row.body,
@@ -55,7 +55,7 @@ impl Table {
             return None;
         }
         // the bin's cell (no search), checked; a search where the rows are off the bins' grid
-        let bin = ((y - self.ys[0]) * format::Y_BINS) as usize;
+        let bin = ((y - self.ys[0]) * binary::Y_BINS) as usize;
         let j = match self.y_bins.get(bin) {
             Some(&j) if self.ys[j as usize] <= y && y <= self.ys[j as usize + 1] => j as usize,
             _ => interval(&self.ys, y),

@@ -5,8 +5,9 @@
 
 use super::cells::SHEARED_REACH;
 use super::{rel_diff, BuildConfig, Cache};
+use crate::master::binary::Table;
 use crate::master::ends::EndCurves;
-use crate::master::format::{CellData, EndsData, Table, TableData};
+use crate::master::format::{CellData, EndsData, TableData};
 use crate::master::{Curve, MasterTables};
 use crate::ThresholdsError;
 use greenwood::CrackLaw;

@@ -1,0 +1,328 @@
+//! The master tables as the library interpolates them ([`Table`]: node coordinates already
+//! turned into `u = ln(end - x)` and the ratios into `g = ln(ratio - 1)`) and their binary form:
+//! every table and the end curves as little-endian `f64` arrays, so that reading it is copying
+//! numbers. Made by the build script (`crates/thresholds/build.rs`, which includes this file and
+//! [`super::format`]) from the committed text, read by the library on first use; `std` only.
+
+use super::format::{CellData, EndsData, PieceData, TableData};
+
+/// A piece ready to interpolate: `u = ln(end - x)` increasing and `g = ln(ratio - 1)`.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Piece {
+    /// ln(end - x) of the nodes, increasing (the nodes in decreasing x).
+    pub u: Vec<f64>,
+    /// `[ln(F - 1), ln(F_on - 1)]` at the nodes (the first NaN in a strip).
+    pub g: [Vec<f64>; 2],
+    /// `[F, F_on]`: vouched for u >= this (ln of the piece's `d_lo`).
+    pub u_lo: [f64; 2],
+    /// `[F, F_on]`: vouched for x <= this (`end - d_lo`; kept to spare an `exp` per answer).
+    pub x_hi: [f64; 2],
+}
+
+impl Piece {
+    fn from_data(p: &PieceData, end: f64) -> Piece {
+        let n = p.x.len();
+        let rev = |v: &[f64], f: &dyn Fn(f64) -> f64| (0..n).map(|i| f(v[n - 1 - i])).collect();
+        Piece {
+            u: rev(&p.x, &|x| (end - x).ln()),
+            g: [
+                rev(&p.f_stick, &|r| (r - 1.0).ln()),
+                rev(&p.f_onset, &|r| (r - 1.0).ln()),
+            ],
+            u_lo: [p.d_lo[0].ln(), p.d_lo[1].ln()],
+            x_hi: [end - p.d_lo[0], end - p.d_lo[1]],
+        }
+    }
+
+    /// Whether the piece has nodes.
+    pub fn is_empty(&self) -> bool {
+        self.u.is_empty()
+    }
+}
+
+/// A row ready to interpolate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// log10 (c_D c_a).
+    pub y: f64,
+    /// Where F = F_TOP.
+    pub x_s: f64,
+    /// Where F_on = F_TOP.
+    pub x_on: f64,
+    /// Both ratios increase with x over the nodes.
+    pub monotone: bool,
+    /// In u = ln(x_s - x).
+    pub body: Piece,
+    /// In w = ln(x_on - x) (F_on only).
+    pub strip: Piece,
+}
+
+/// A table ready to interpolate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Table {
+    /// k.
+    pub k: f64,
+    /// The rows' y.
+    pub ys: Vec<f64>,
+    /// The rows.
+    pub rows: Vec<Row>,
+    /// Per cell ([`CellData::limits`]): `[x_hi F, x_hi F_on]` (plain x, vouched for x <= this)
+    /// and `[body F, body F_on, strip F_on]` (at a fixed distance, vouched for u >= this).
+    pub cells: Vec<[f64; 5]>,
+    /// The cell of each bin of y, 1/[`Y_BINS`] wide from the first row ([`y_bins`]): the cell of
+    /// a y without a search.
+    pub y_bins: Vec<u32>,
+}
+
+/// Bins of y per unit: the rows lie on this grid (0.5 halved down to 1/64 by the build).
+pub const Y_BINS: f64 = 64.0;
+
+/// The cell (`i`: between rows i and i + 1) of each bin of y of [`Y_BINS`] from `ys[0]`; empty
+/// unless every row lies on that grid.
+pub fn y_bins(ys: &[f64]) -> Vec<u32> {
+    let Some((&y0, &y1)) = ys.first().zip(ys.last()) else {
+        return Vec::new();
+    };
+    let on_grid = ys.iter().all(|y| {
+        let p = (y - y0) * Y_BINS;
+        (p - p.round()).abs() < 1e-9
+    });
+    if ys.len() < 2 || !on_grid {
+        return Vec::new();
+    }
+    let bins = ((y1 - y0) * Y_BINS).round() as usize;
+    (0..bins)
+        .map(|m| {
+            let mid = y0 + (m as f64 + 0.5) / Y_BINS;
+            (ys.partition_point(|&v| v <= mid) - 1) as u32
+        })
+        .collect()
+}
+
+impl Table {
+    /// The interpolation form of `t`.
+    pub fn from_data(t: &TableData) -> Table {
+        Table {
+            k: t.k,
+            ys: t.rows.iter().map(|r| r.y).collect(),
+            rows: t
+                .rows
+                .iter()
+                .map(|r| Row {
+                    y: r.y,
+                    x_s: r.x_s,
+                    x_on: r.x_on,
+                    monotone: r.monotone,
+                    body: Piece::from_data(&r.body, r.x_s),
+                    strip: Piece::from_data(&r.strip, r.x_on),
+                })
+                .collect(),
+            cells: t.cells.iter().map(CellData::limits).collect(),
+            y_bins: y_bins(&t.rows.iter().map(|r| r.y).collect::<Vec<_>>()),
+        }
+    }
+}
+
+/// The binary form's first bytes.
+const MAGIC: &[u8; 8] = b"STKMT004";
+
+/// Appends numbers to the binary form.
+#[derive(Default)]
+struct Writer(Vec<u8>);
+
+impl Writer {
+    fn f(&mut self, v: f64) {
+        self.0.extend_from_slice(&v.to_le_bytes());
+    }
+    fn n(&mut self, v: usize) {
+        self.f(v as f64);
+    }
+    fn fs(&mut self, v: &[f64]) {
+        self.n(v.len());
+        for &x in v {
+            self.f(x);
+        }
+    }
+    fn piece(&mut self, p: &Piece) {
+        self.fs(&p.u);
+        self.fs(&p.g[0]);
+        self.fs(&p.g[1]);
+        self.f(p.u_lo[0]);
+        self.f(p.u_lo[1]);
+        self.f(p.x_hi[0]);
+        self.f(p.x_hi[1]);
+    }
+}
+
+/// Reads numbers from the binary form.
+struct Reader<'a> {
+    bytes: &'a [u8],
+    at: usize,
+}
+
+impl Reader<'_> {
+    fn f(&mut self) -> Option<f64> {
+        let b = self.bytes.get(self.at..self.at + 8)?;
+        self.at += 8;
+        Some(f64::from_le_bytes(b.try_into().ok()?))
+    }
+    fn n(&mut self) -> Option<usize> {
+        let v = self.f()?;
+        (v >= 0.0 && v.fract() == 0.0 && v < 1e9).then_some(v as usize)
+    }
+    fn fs(&mut self) -> Option<Vec<f64>> {
+        let n = self.n()?;
+        let bytes = self.bytes.get(self.at..self.at + 8 * n)?;
+        self.at += 8 * n;
+        // in bulk: a process's first answer reads about 2 MB of these
+        Some(
+            bytes
+                .chunks_exact(8)
+                .map(|b| <[u8; 8]>::try_from(b).map_or(f64::NAN, f64::from_le_bytes))
+                .collect(),
+        )
+    }
+    fn piece(&mut self) -> Option<Piece> {
+        Some(Piece {
+            u: self.fs()?,
+            g: [self.fs()?, self.fs()?],
+            u_lo: [self.f()?, self.f()?],
+            x_hi: [self.f()?, self.f()?],
+        })
+    }
+}
+
+/// The binary form of the tables and the end curves: the magic, the table count, each table's
+/// k, byte offset and length, then the end curves, then the tables.
+pub fn to_bytes(tables: &[TableData], ends: &EndsData) -> Vec<u8> {
+    let encoded: Vec<Vec<u8>> = tables
+        .iter()
+        .map(|t| table_bytes(&Table::from_data(t)))
+        .collect();
+    let mut e = Writer::default();
+    e.f(ends.y0);
+    e.f(ends.dy);
+    e.n(ends.ny);
+    e.f(ends.k0);
+    e.n(ends.per_octave);
+    e.n(ends.nk);
+    e.fs(&ends.x_s);
+    e.fs(&ends.x_on);
+    let valid: Vec<f64> = ends.valid.iter().map(|&v| f64::from(u8::from(v))).collect();
+    e.fs(&valid);
+    e.f(ends.kcheck_y.0);
+    e.f(ends.kcheck_y.1);
+    e.n(ends.kcheck_y.2);
+    let flat: Vec<f64> = ends.kcheck.iter().flat_map(CellData::numbers).collect();
+    e.fs(&flat);
+    let mut w = Writer::default();
+    w.0.extend_from_slice(MAGIC);
+    w.n(tables.len());
+    let head = 8 + 8 + 24 * tables.len();
+    let mut offset = head + e.0.len();
+    for (t, b) in tables.iter().zip(&encoded) {
+        w.f(t.k);
+        w.n(offset);
+        w.n(b.len());
+        offset += b.len();
+    }
+    w.0.extend_from_slice(&e.0);
+    for b in encoded {
+        w.0.extend_from_slice(&b);
+    }
+    w.0
+}
+
+fn table_bytes(t: &Table) -> Vec<u8> {
+    let mut w = Writer::default();
+    w.f(t.k);
+    w.n(t.rows.len());
+    for r in &t.rows {
+        w.f(r.y);
+        w.f(r.x_s);
+        w.f(r.x_on);
+        w.f(f64::from(u8::from(r.monotone)));
+        w.piece(&r.body);
+        w.piece(&r.strip);
+    }
+    for c in &t.cells {
+        for v in c {
+            w.f(*v);
+        }
+    }
+    w.0
+}
+
+/// The index of the binary form: `(k, offset, length)` of each table, and where the end curves
+/// lie.
+pub fn index(bytes: &[u8]) -> Option<Vec<(f64, usize, usize)>> {
+    if bytes.get(..8)? != MAGIC {
+        return None;
+    }
+    let mut r = Reader { bytes, at: 8 };
+    let n = r.n()?;
+    (0..n).map(|_| Some((r.f()?, r.n()?, r.n()?))).collect()
+}
+
+/// The end curves from the binary form.
+pub fn ends_from_bytes(bytes: &[u8]) -> Option<EndsData> {
+    let n = index(bytes)?.len();
+    let mut r = Reader {
+        bytes,
+        at: 16 + 24 * n,
+    };
+    let (y0, dy, ny, k0, per_octave, nk) = (r.f()?, r.f()?, r.n()?, r.f()?, r.n()?, r.n()?);
+    let x_s = r.fs()?;
+    let x_on = r.fs()?;
+    let valid = r.fs()?.into_iter().map(|v| v == 1.0).collect();
+    let kcheck_y = (r.f()?, r.f()?, r.n()?);
+    let flat = r.fs()?;
+    let kcheck = flat.chunks_exact(5).map(CellData::from_numbers).collect();
+    Some(EndsData {
+        header: Vec::new(),
+        y0,
+        dy,
+        ny,
+        k0,
+        per_octave,
+        nk,
+        x_s,
+        x_on,
+        valid,
+        kcheck_y,
+        kcheck,
+    })
+}
+
+/// Table `i` of the binary form.
+pub fn table_from_bytes(bytes: &[u8], i: usize) -> Option<Table> {
+    let (_, offset, len) = *index(bytes)?.get(i)?;
+    let mut r = Reader {
+        bytes: bytes.get(offset..offset + len)?,
+        at: 0,
+    };
+    let k = r.f()?;
+    let n = r.n()?;
+    let mut rows = Vec::with_capacity(n);
+    for _ in 0..n {
+        rows.push(Row {
+            y: r.f()?,
+            x_s: r.f()?,
+            x_on: r.f()?,
+            monotone: r.f()? == 1.0,
+            body: r.piece()?,
+            strip: r.piece()?,
+        });
+    }
+    let cells = (0..n.saturating_sub(1))
+        .map(|_| Some([r.f()?, r.f()?, r.f()?, r.f()?, r.f()?]))
+        .collect::<Option<Vec<_>>>()?;
+    let ys: Vec<f64> = rows.iter().map(|r| r.y).collect();
+    Some(Table {
+        k,
+        y_bins: y_bins(&ys),
+        ys,
+        rows,
+        cells,
+    })
+}
