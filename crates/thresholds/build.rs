@@ -1,9 +1,14 @@
 //! Turns the committed master tables (`data/master_k<k>.csv`, `data/master_ends.csv`, text) into
 //! their binary form (`$OUT_DIR/master.bin`), which the library embeds: reading it at run time
 //! is copying numbers (about 1 ms for the end curves and one table), not parsing text. The
-//! reader and writer are the library's own (`src/master/format.rs`, `src/master/binary.rs`).
+//! reader and writer are the library's own (`src/master/format.rs`, `src/master/binary.rs`,
+//! `src/bytes.rs`).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
+
+#[allow(dead_code)]
+#[path = "src/bytes.rs"]
+mod bytes;
 
 #[allow(dead_code)]
 #[path = "src/master/format.rs"]
@@ -21,6 +26,7 @@ use std::path::{Path, PathBuf};
 
 fn main() {
     let data = Path::new("data");
+    println!("cargo:rerun-if-changed=src/bytes.rs");
     println!("cargo:rerun-if-changed=src/master/format.rs");
     println!("cargo:rerun-if-changed=src/master/binary.rs");
     println!("cargo:rerun-if-changed=src/restitution/format.rs");

@@ -45,6 +45,7 @@
 //! - [`sweep`]: grids of searches in chunks that keep their hints, their axes and their rows,
 //!   shared by the CLI and the Python package.
 
+pub mod bytes;
 pub mod error;
 pub mod fit;
 pub mod laws;

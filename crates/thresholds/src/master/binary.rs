@@ -1,10 +1,12 @@
 //! The master tables as the library interpolates them ([`Table`]: node coordinates already
 //! turned into `u = ln(end - x)` and the ratios into `g = ln(ratio - 1)`) and their binary form:
-//! every table and the end curves as little-endian `f64` arrays, so that reading it is copying
-//! numbers. Made by the build script (`crates/thresholds/build.rs`, which includes this file and
-//! [`super::format`]) from the committed text, read by the library on first use; `std` only.
+//! every table and the end curves as little-endian `f64` arrays ([`crate::bytes`]), so that
+//! reading it is copying numbers. Made by the build script (`crates/thresholds/build.rs`, which
+//! includes this file, [`super::format`] and [`crate::bytes`]) from the committed text, read by
+//! the library on first use; `std` only.
 
 use super::format::{CellData, EndsData, PieceData, TableData};
+use crate::bytes::{self, Reader, Writer};
 
 /// A piece ready to interpolate: `u = ln(end - x)` increasing and `g = ln(ratio - 1)`.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -126,78 +128,33 @@ impl Table {
 /// The binary form's first bytes.
 const MAGIC: &[u8; 8] = b"STKMT004";
 
-/// Appends numbers to the binary form.
-#[derive(Default)]
-struct Writer(Vec<u8>);
+impl Piece {
+    fn write(&self, w: &mut Writer) {
+        w.fs(&self.u);
+        w.fs(&self.g[0]);
+        w.fs(&self.g[1]);
+        w.f(self.u_lo[0]);
+        w.f(self.u_lo[1]);
+        w.f(self.x_hi[0]);
+        w.f(self.x_hi[1]);
+    }
 
-impl Writer {
-    fn f(&mut self, v: f64) {
-        self.0.extend_from_slice(&v.to_le_bytes());
-    }
-    fn n(&mut self, v: usize) {
-        self.f(v as f64);
-    }
-    fn fs(&mut self, v: &[f64]) {
-        self.n(v.len());
-        for &x in v {
-            self.f(x);
-        }
-    }
-    fn piece(&mut self, p: &Piece) {
-        self.fs(&p.u);
-        self.fs(&p.g[0]);
-        self.fs(&p.g[1]);
-        self.f(p.u_lo[0]);
-        self.f(p.u_lo[1]);
-        self.f(p.x_hi[0]);
-        self.f(p.x_hi[1]);
-    }
-}
-
-/// Reads numbers from the binary form.
-struct Reader<'a> {
-    bytes: &'a [u8],
-    at: usize,
-}
-
-impl Reader<'_> {
-    fn f(&mut self) -> Option<f64> {
-        let b = self.bytes.get(self.at..self.at + 8)?;
-        self.at += 8;
-        Some(f64::from_le_bytes(b.try_into().ok()?))
-    }
-    fn n(&mut self) -> Option<usize> {
-        let v = self.f()?;
-        (v >= 0.0 && v.fract() == 0.0 && v < 1e9).then_some(v as usize)
-    }
-    fn fs(&mut self) -> Option<Vec<f64>> {
-        let n = self.n()?;
-        let bytes = self.bytes.get(self.at..self.at + 8 * n)?;
-        self.at += 8 * n;
-        // in bulk: a process's first answer reads about 2 MB of these
-        Some(
-            bytes
-                .chunks_exact(8)
-                .map(|b| <[u8; 8]>::try_from(b).map_or(f64::NAN, f64::from_le_bytes))
-                .collect(),
-        )
-    }
-    fn piece(&mut self) -> Option<Piece> {
+    fn read(r: &mut Reader) -> Option<Piece> {
         Some(Piece {
-            u: self.fs()?,
-            g: [self.fs()?, self.fs()?],
-            u_lo: [self.f()?, self.f()?],
-            x_hi: [self.f()?, self.f()?],
+            u: r.fs()?,
+            g: [r.fs()?, r.fs()?],
+            u_lo: [r.f()?, r.f()?],
+            x_hi: [r.f()?, r.f()?],
         })
     }
 }
 
-/// The binary form of the tables and the end curves: the magic, the table count, each table's
-/// k, byte offset and length, then the end curves, then the tables.
+/// The binary form of the tables and the end curves ([`crate::bytes`]): the end curves are
+/// what the tables share.
 pub fn to_bytes(tables: &[TableData], ends: &EndsData) -> Vec<u8> {
-    let encoded: Vec<Vec<u8>> = tables
+    let encoded: Vec<(f64, Vec<u8>)> = tables
         .iter()
-        .map(|t| table_bytes(&Table::from_data(t)))
+        .map(|t| (t.k, table_bytes(&Table::from_data(t))))
         .collect();
     let mut e = Writer::default();
     e.f(ends.y0);
@@ -208,43 +165,26 @@ pub fn to_bytes(tables: &[TableData], ends: &EndsData) -> Vec<u8> {
     e.n(ends.nk);
     e.fs(&ends.x_s);
     e.fs(&ends.x_on);
-    let valid: Vec<f64> = ends.valid.iter().map(|&v| f64::from(u8::from(v))).collect();
-    e.fs(&valid);
+    e.flags(&ends.valid);
     e.f(ends.kcheck_y.0);
     e.f(ends.kcheck_y.1);
     e.n(ends.kcheck_y.2);
     let flat: Vec<f64> = ends.kcheck.iter().flat_map(CellData::numbers).collect();
     e.fs(&flat);
-    let mut w = Writer::default();
-    w.0.extend_from_slice(MAGIC);
-    w.n(tables.len());
-    let head = 8 + 8 + 24 * tables.len();
-    let mut offset = head + e.0.len();
-    for (t, b) in tables.iter().zip(&encoded) {
-        w.f(t.k);
-        w.n(offset);
-        w.n(b.len());
-        offset += b.len();
-    }
-    w.0.extend_from_slice(&e.0);
-    for b in encoded {
-        w.0.extend_from_slice(&b);
-    }
-    w.0
+    bytes::to_bytes(MAGIC, &e.0, &encoded)
 }
 
 fn table_bytes(t: &Table) -> Vec<u8> {
     let mut w = Writer::default();
     w.f(t.k);
-    w.n(t.rows.len());
-    for r in &t.rows {
+    w.list(&t.rows, |w, r| {
         w.f(r.y);
         w.f(r.x_s);
         w.f(r.x_on);
-        w.f(f64::from(u8::from(r.monotone)));
-        w.piece(&r.body);
-        w.piece(&r.strip);
-    }
+        w.flag(r.monotone);
+        r.body.write(w);
+        r.strip.write(w);
+    });
     for c in &t.cells {
         for v in c {
             w.f(*v);
@@ -253,68 +193,45 @@ fn table_bytes(t: &Table) -> Vec<u8> {
     w.0
 }
 
-/// The index of the binary form: `(k, offset, length)` of each table, and where the end curves
-/// lie.
+/// The index of the binary form: `(k, offset, length)` of each table.
 pub fn index(bytes: &[u8]) -> Option<Vec<(f64, usize, usize)>> {
-    if bytes.get(..8)? != MAGIC {
-        return None;
-    }
-    let mut r = Reader { bytes, at: 8 };
-    let n = r.n()?;
-    (0..n).map(|_| Some((r.f()?, r.n()?, r.n()?))).collect()
+    bytes::index(bytes, MAGIC)
 }
 
 /// The end curves from the binary form.
 pub fn ends_from_bytes(bytes: &[u8]) -> Option<EndsData> {
-    let n = index(bytes)?.len();
-    let mut r = Reader {
-        bytes,
-        at: 16 + 24 * n,
-    };
-    let (y0, dy, ny, k0, per_octave, nk) = (r.f()?, r.f()?, r.n()?, r.f()?, r.n()?, r.n()?);
-    let x_s = r.fs()?;
-    let x_on = r.fs()?;
-    let valid = r.fs()?.into_iter().map(|v| v == 1.0).collect();
-    let kcheck_y = (r.f()?, r.f()?, r.n()?);
-    let flat = r.fs()?;
-    let kcheck = flat.chunks_exact(5).map(CellData::from_numbers).collect();
-    Some(EndsData {
-        header: Vec::new(),
-        y0,
-        dy,
-        ny,
-        k0,
-        per_octave,
-        nk,
-        x_s,
-        x_on,
-        valid,
-        kcheck_y,
-        kcheck,
-    })
+    let mut r = bytes::shared(bytes, MAGIC)?;
+    let mut e = EndsData::empty();
+    (e.y0, e.dy, e.ny, e.k0, e.per_octave, e.nk) = (r.f()?, r.f()?, r.n()?, r.f()?, r.n()?, r.n()?);
+    e.x_s = r.fs()?;
+    e.x_on = r.fs()?;
+    e.valid = r.flags()?;
+    e.kcheck_y = (r.f()?, r.f()?, r.n()?);
+    e.kcheck = r
+        .fs()?
+        .chunks_exact(5)
+        .map(CellData::from_numbers)
+        .collect();
+    Some(e)
 }
 
 /// Table `i` of the binary form.
 pub fn table_from_bytes(bytes: &[u8], i: usize) -> Option<Table> {
-    let (_, offset, len) = *index(bytes)?.get(i)?;
-    let mut r = Reader {
-        bytes: bytes.get(offset..offset + len)?,
-        at: 0,
-    };
+    let mut r = bytes::table(bytes, MAGIC, i)?;
     let k = r.f()?;
-    let n = r.n()?;
-    let mut rows = Vec::with_capacity(n);
-    for _ in 0..n {
-        rows.push(Row {
-            y: r.f()?,
-            x_s: r.f()?,
-            x_on: r.f()?,
-            monotone: r.f()? == 1.0,
-            body: r.piece()?,
-            strip: r.piece()?,
-        });
-    }
-    let cells = (0..n.saturating_sub(1))
+    let rows = r.list(|r| {
+        let (y, x_s, x_on, monotone) = (r.f()?, r.f()?, r.f()?, r.flag()?);
+        let (body, strip) = (Piece::read(r)?, Piece::read(r)?);
+        Some(Row {
+            y,
+            x_s,
+            x_on,
+            monotone,
+            body,
+            strip,
+        })
+    })?;
+    let cells = (0..rows.len().saturating_sub(1))
         .map(|_| Some([r.f()?, r.f()?, r.f()?, r.f()?, r.f()?]))
         .collect::<Option<Vec<_>>>()?;
     let ys: Vec<f64> = rows.iter().map(|r| r.y).collect();

@@ -164,6 +164,26 @@ pub struct EndsData {
     pub kcheck: Vec<CellData>,
 }
 
+impl EndsData {
+    /// No grid and no values yet (NaN numbers, zero counts).
+    pub fn empty() -> EndsData {
+        EndsData {
+            header: Vec::new(),
+            y0: f64::NAN,
+            dy: f64::NAN,
+            ny: 0,
+            k0: f64::NAN,
+            per_octave: 0,
+            nk: 0,
+            x_s: Vec::new(),
+            x_on: Vec::new(),
+            valid: Vec::new(),
+            kcheck_y: (f64::NAN, f64::NAN, 0),
+            kcheck: Vec::new(),
+        }
+    }
+}
+
 /// A file that cannot be read: its line (1-based; 0 for the whole file) and what is wrong.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct FormatError {
@@ -304,20 +324,7 @@ pub fn parse_table(text: &str) -> Result<TableData, FormatError> {
 
 /// Reads the end curves from their text.
 pub fn parse_ends(text: &str) -> Result<EndsData, FormatError> {
-    let mut e = EndsData {
-        header: Vec::new(),
-        y0: f64::NAN,
-        dy: f64::NAN,
-        ny: 0,
-        k0: f64::NAN,
-        per_octave: 0,
-        nk: 0,
-        x_s: Vec::new(),
-        x_on: Vec::new(),
-        valid: Vec::new(),
-        kcheck_y: (f64::NAN, f64::NAN, 0),
-        kcheck: Vec::new(),
-    };
+    let mut e = EndsData::empty();
     for (i, line) in text.lines().enumerate() {
         let n = i + 1;
         if let Some(h) = line.strip_prefix('#') {

@@ -1,6 +1,6 @@
 //! The restitution tables as data: text (the committed `data/restitution_k<k>.csv`) and binary
-//! (what the library embeds), with nothing but `std`, so that the build script includes this
-//! file and reads them with the library's own code.
+//! (what the library embeds, [`crate::bytes`]), with nothing but `std`, so that the build script
+//! includes this file and reads them with the library's own code.
 //!
 //! One table a k, as text (`#` lines first):
 //! ```text
@@ -16,6 +16,8 @@
 //! grows from 0, and bounded far above it, where e tends to 1 in the JKR limit or falls as 1/V_in
 //! near the cliff) and `w |w|` with `w = V_out / V_stick > 0` at the double-collision channels;
 //! both vanish at V_stick.
+
+use crate::bytes::{self, Writer};
 
 /// One node: its position, the threshold ratios there and `h` at every channel.
 #[derive(Debug, Clone, PartialEq)]
@@ -159,19 +161,17 @@ pub fn parse(text: &str) -> Result<TableData, FormatError> {
                     h: v[3..].to_vec(),
                 });
             }
-            "cells" => {
+            "cells" | "kcells" => {
                 let b = bits(n, fields.get(1))?;
-                t.rows
+                let row = t
+                    .rows
                     .last_mut()
-                    .ok_or_else(|| bad("cells before any row"))?
-                    .cells = b;
-            }
-            "kcells" => {
-                let b = bits(n, fields.get(1))?;
-                t.rows
-                    .last_mut()
-                    .ok_or_else(|| bad("cells before any row"))?
-                    .kcells = b;
+                    .ok_or_else(|| bad("cells before any row"))?;
+                if fields[0] == "cells" {
+                    row.cells = b;
+                } else {
+                    row.kcells = b;
+                }
             }
             other => return Err(bad(&format!("unknown record '{other}'"))),
         }
@@ -257,118 +257,51 @@ impl Table {
 /// The binary form's first bytes.
 const MAGIC: &[u8; 8] = b"STKRT001";
 
-fn put(out: &mut Vec<u8>, v: f64) {
-    out.extend_from_slice(&v.to_le_bytes());
-}
-
-fn put_all(out: &mut Vec<u8>, v: &[f64]) {
-    put(out, v.len() as f64);
-    for &x in v {
-        put(out, x);
-    }
-}
-
-fn flags(v: &[bool]) -> Vec<f64> {
-    v.iter().map(|&b| f64::from(u8::from(b))).collect()
-}
-
-/// The binary form of `tables`: the magic, the count, each table's k, offset and length, then
-/// the tables.
+/// The binary form of `tables` ([`crate::bytes`]; they share nothing).
 pub fn to_bytes(tables: &[TableData]) -> Vec<u8> {
-    let encoded: Vec<Vec<u8>> = tables
+    let encoded: Vec<(f64, Vec<u8>)> = tables
         .iter()
         .map(|t| {
             let t = Table::from_data(t);
-            let mut out = Vec::new();
-            put(&mut out, t.k);
-            put_all(&mut out, &t.sigma);
-            put_all(&mut out, &t.nu);
-            put(&mut out, t.rows.len() as f64);
-            for r in &t.rows {
-                put(&mut out, r.y);
-                put(&mut out, r.x_s);
-                put_all(&mut out, &r.u);
-                put_all(&mut out, &r.h);
-                put_all(&mut out, &flags(&r.cells));
-                put_all(&mut out, &flags(&r.kcells));
-            }
-            out
+            let mut w = Writer::default();
+            w.f(t.k);
+            w.fs(&t.sigma);
+            w.fs(&t.nu);
+            w.list(&t.rows, |w, r| {
+                w.f(r.y);
+                w.f(r.x_s);
+                w.fs(&r.u);
+                w.fs(&r.h);
+                w.flags(&r.cells);
+                w.flags(&r.kcells);
+            });
+            (t.k, w.0)
         })
         .collect();
-    let mut out = MAGIC.to_vec();
-    put(&mut out, tables.len() as f64);
-    let mut offset = 16 + 24 * tables.len();
-    for (t, b) in tables.iter().zip(&encoded) {
-        put(&mut out, t.k);
-        put(&mut out, offset as f64);
-        put(&mut out, b.len() as f64);
-        offset += b.len();
-    }
-    for b in encoded {
-        out.extend_from_slice(&b);
-    }
-    out
-}
-
-struct Reader<'a> {
-    bytes: &'a [u8],
-    at: usize,
-}
-
-impl Reader<'_> {
-    fn f(&mut self) -> Option<f64> {
-        let b = self.bytes.get(self.at..self.at + 8)?;
-        self.at += 8;
-        Some(f64::from_le_bytes(b.try_into().ok()?))
-    }
-    fn n(&mut self) -> Option<usize> {
-        let v = self.f()?;
-        (v >= 0.0 && v.fract() == 0.0 && v < 1e9).then_some(v as usize)
-    }
-    fn all(&mut self) -> Option<Vec<f64>> {
-        let n = self.n()?;
-        if self.bytes.len() < self.at + 8 * n {
-            return None;
-        }
-        (0..n).map(|_| self.f()).collect()
-    }
-    fn flags(&mut self) -> Option<Vec<bool>> {
-        Some(self.all()?.into_iter().map(|v| v == 1.0).collect())
-    }
+    bytes::to_bytes(MAGIC, &[], &encoded)
 }
 
 /// `(k, offset, length)` of each table of the binary form.
 pub fn index(bytes: &[u8]) -> Option<Vec<(f64, usize, usize)>> {
-    if bytes.get(..8)? != MAGIC {
-        return None;
-    }
-    let mut r = Reader { bytes, at: 8 };
-    let n = r.n()?;
-    (0..n).map(|_| Some((r.f()?, r.n()?, r.n()?))).collect()
+    bytes::index(bytes, MAGIC)
 }
 
 /// Table `i` of the binary form.
 pub fn table_from_bytes(bytes: &[u8], i: usize) -> Option<Table> {
-    let (_, offset, len) = *index(bytes)?.get(i)?;
-    let mut r = Reader {
-        bytes: bytes.get(offset..offset + len)?,
-        at: 0,
-    };
-    let k = r.f()?;
-    let sigma = r.all()?;
-    let nu = r.all()?;
-    let n = r.n()?;
-    let mut rows = Vec::with_capacity(n);
-    for _ in 0..n {
-        rows.push(Row {
-            y: r.f()?,
-            x_s: r.f()?,
-            u: r.all()?,
-            h: r.all()?,
-            cells: r.flags()?,
-            kcells: r.flags()?,
-        });
-    }
+    let mut r = bytes::table(bytes, MAGIC, i)?;
+    let (k, sigma, nu) = (r.f()?, r.fs()?, r.fs()?);
+    let rows = r.list(|r| {
+        let (y, x_s) = (r.f()?, r.f()?);
+        let (u, h, cells, kcells) = (r.fs()?, r.fs()?, r.flags()?, r.flags()?);
+        Some(Row {
+            y,
+            x_s,
+            u,
+            h,
+            cells,
+            kcells,
+        })
+    })?;
     Some(Table {
         k,
         sigma,
