@@ -175,21 +175,7 @@ impl MasterTables {
         end: Option<f64>,
         ln_k: f64,
     ) -> Eval {
-        self.eval_with(ks, curve, x, y, end, ln_k, true)
-    }
-
-    #[allow(clippy::too_many_arguments)]
-    fn eval_with(
-        &self,
-        ks: &KStencil,
-        curve: Curve,
-        x: f64,
-        y: f64,
-        end: Option<f64>,
-        ln_k: f64,
-        k_checked: bool,
-    ) -> Eval {
-        let check = match ks.interval.filter(|_| k_checked) {
+        let check = match ks.interval {
             Some(i) => match self.k_check(i, y) {
                 Some(c) => Some(c),
                 None => return Eval::Unknown,

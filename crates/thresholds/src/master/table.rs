@@ -46,6 +46,14 @@ impl Curve {
     }
 }
 
+/// The body's coordinate u = ln(x_s - x) of `row` at `x`, far from the end the row's first
+/// node's (where plain interpolation takes the value there); `None` at or beyond x_s.
+fn plain_u(row: &binary::Row, x: f64) -> Option<f64> {
+    let far = *row.body.u.last()?;
+    let u = (row.x_s - x).ln().min(far);
+    u.is_finite().then_some(u)
+}
+
 impl Table {
     /// The four rows around `y` (the first index), with their cell; `None` unless `y` lies in a
     /// cell with a full stencil that is not one of the two end cells.
@@ -121,13 +129,8 @@ impl Table {
         let (v, _) = curve.indices();
         let mut g = [0.0; 4];
         for (q, row) in self.rows[s..s + 4].iter().enumerate() {
-            let p = &row.body;
-            let far = *p.u.last()?;
-            let u = (row.x_s - x).ln().min(far);
-            if !u.is_finite() {
-                return None;
-            }
-            g[q] = local_cubic(&p.u, &p.g[v], u);
+            let u = plain_u(row, x)?;
+            g[q] = local_cubic(&row.body.u, &row.body.g[v], u);
         }
         let g = lagrange(&self.ys[s..s + 4], &g, y);
         g.is_finite().then_some(g)
@@ -138,12 +141,7 @@ impl Table {
         let (s, _) = self.stencil(y)?;
         let mut g = [[0.0; 4]; 2];
         for (q, row) in self.rows[s..s + 4].iter().enumerate() {
-            let p = &row.body;
-            let far = *p.u.last()?;
-            let u = (row.x_s - x).ln().min(far);
-            if !u.is_finite() {
-                return None;
-            }
+            let (u, p) = (plain_u(row, x)?, &row.body);
             let [a, b] = local_cubic_both(&p.u, [&p.g[0], &p.g[1]], u);
             (g[0][q], g[1][q]) = (a, b);
         }

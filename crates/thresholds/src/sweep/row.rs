@@ -228,17 +228,22 @@ pub fn row_text(format: Format, grid: &Grid, row: &Row) -> String {
     }
 }
 
+/// A written CSV line (without its line break) read back as one record.
+fn csv_record(line: &str) -> Option<csv::StringRecord> {
+    csv::ReaderBuilder::new()
+        .has_headers(false)
+        .from_reader(line.as_bytes())
+        .records()
+        .next()?
+        .ok()
+}
+
 /// The fields of a written row (one line, without its line break) by column: the CSV fields as
 /// text, or the JSON object's values; `None` if the line is not a row of [`COLUMNS`].
 pub fn row_fields(format: Format, line: &str) -> Option<Vec<serde_json::Value>> {
     match format {
         Format::Csv => {
-            let record = csv::ReaderBuilder::new()
-                .has_headers(false)
-                .from_reader(line.as_bytes())
-                .records()
-                .next()?
-                .ok()?;
+            let record = csv_record(line)?;
             (record.len() == COLUMNS.len())
                 .then(|| record.iter().map(|f| f.to_string().into()).collect())
         }
@@ -257,12 +262,7 @@ pub fn row_fields(format: Format, line: &str) -> Option<Vec<serde_json::Value>> 
 pub fn hint_of(format: Format, line: &str) -> Option<Hint> {
     let (onset, stick) = match format {
         Format::Csv => {
-            let record = csv::ReaderBuilder::new()
-                .has_headers(false)
-                .from_reader(line.as_bytes())
-                .records()
-                .next()?
-                .ok()?;
+            let record = csv_record(line)?;
             let at = |name: &str| -> Option<f64> {
                 let i = COLUMNS.iter().position(|c| *c == name)?;
                 record.get(i)?.parse().ok()

@@ -47,6 +47,28 @@ fn last_passing(checks: &[(f64, bool)], all: f64, none: f64) -> f64 {
     }
 }
 
+/// Each of the sorted `points` (once) and whether the cubic in y through the stencil's rows at
+/// it (`g(q, point)`: `g = ln(ratio - 1)` of row `q`, at `ys[q]`), evaluated at `y_mid`, is within
+/// `tol` of the `exact` ratio there.
+fn checked(
+    mut points: Vec<f64>,
+    ys: &[f64],
+    y_mid: f64,
+    tol: f64,
+    g: impl Fn(usize, f64) -> f64 + Sync,
+    exact: impl Fn(f64) -> Option<f64> + Sync,
+) -> Vec<(f64, bool)> {
+    points.dedup();
+    points
+        .par_iter()
+        .map(|&p| {
+            let g: Vec<f64> = (0..ys.len()).map(|q| g(q, p)).collect();
+            let predicted = 1.0 + lagrange(ys, &g, y_mid).exp();
+            (p, rel_diff(Some(predicted), exact(p)) <= tol)
+        })
+        .collect()
+}
+
 /// The limits of the cell between `rows[j]` and `rows[j + 1]` (checked at mid-y: in plain x at
 /// the nodes of both rows, and at a fixed distance to the end interpolated there), and whether
 /// every check inside the rows' vouched ranges passed (else a row is added in the middle).
@@ -102,18 +124,17 @@ fn check_cell(
             .filter(|&x| x <= hi)
             .collect();
         xs.sort_by(f64::total_cmp);
-        xs.dedup();
-        let checks: Vec<(f64, bool)> = xs
-            .par_iter()
-            .map(|&x| {
-                let g: Vec<f64> = of_rows
-                    .iter()
-                    .map(|(u, g, x_s)| local_cubic(u, g, (x_s - x).ln().min(u[u.len() - 1])))
-                    .collect();
-                let predicted = 1.0 + lagrange(&ys, &g, y_mid).exp();
-                (x, rel_diff(Some(predicted), exact(x, y_mid, v)) <= cfg.tol)
-            })
-            .collect();
+        let checks = checked(
+            xs,
+            &ys,
+            y_mid,
+            cfg.tol,
+            |q, x| {
+                let (u, g, x_s) = &of_rows[q];
+                local_cubic(u, g, (x_s - x).ln().min(u[u.len() - 1]))
+            },
+            |x| exact(x, y_mid, v),
+        );
         cell.x_hi[v] = last_passing(&checks, hi, f64::NEG_INFINITY);
         // far from the end (where the sheared checks do not reach) plain x must hold
         ok &= checks
@@ -154,21 +175,14 @@ fn check_cell(
             .filter(|&u| u >= lo && u <= hi)
             .collect();
         us.sort_by(|a, b| b.total_cmp(a));
-        us.dedup();
-        let checks: Vec<(f64, bool)> = us
-            .par_iter()
-            .map(|&u| {
-                let g: Vec<f64> = of_rows
-                    .iter()
-                    .map(|(cu, cg)| local_cubic(cu, cg, u))
-                    .collect();
-                let predicted = 1.0 + lagrange(&ys, &g, y_mid).exp();
-                (
-                    u,
-                    rel_diff(Some(predicted), exact(end_mid - u.exp(), y_mid, v)) <= cfg.tol,
-                )
-            })
-            .collect();
+        let checks = checked(
+            us,
+            &ys,
+            y_mid,
+            cfg.tol,
+            |q, u| local_cubic(&of_rows[q].0, &of_rows[q].1, u),
+            |u| exact(end_mid - u.exp(), y_mid, v),
+        );
         let all = if lo.is_finite() { lo } else { f64::INFINITY };
         cell.d_lo[c] = last_passing(&checks, all, f64::INFINITY).exp();
         ok &= checks.iter().all(|q| q.1);
