@@ -22,68 +22,15 @@
 use rayon::prelude::*;
 use std::time::Instant;
 use thresholds::{
-    sticking_thresholds, Contact, CrackLaw, Geometry, MasterTables, Material, SearchOptions,
-    StickingThresholds, ThresholdMethod,
+    sticking_thresholds, CrackLaw, MasterTables, SearchOptions, StickingThresholds, ThresholdMethod,
 };
 
-/// A small deterministic generator (SplitMix64), so that a run is repeatable.
-struct Rng(u64);
+// (shared with tests/master_table.rs, which reads the fields this example does not)
+#[allow(dead_code)]
+#[path = "common/domain.rs"]
+mod domain;
 
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        (z ^ (z >> 31)) as f64 / u64::MAX as f64
-    }
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo * (hi / lo).powf(self.next())
-    }
-}
-
-struct Point {
-    contact: Contact,
-    k: f64,
-    t_vis: f64,
-}
-
-/// A k the committed tables answer (as `tests/master_table.rs` draws it).
-fn answered_k(rng: &mut Rng) -> f64 {
-    let tables = MasterTables::standard();
-    let (lo, hi) = tables.k_range();
-    if tables.k_checked() {
-        rng.log_uniform(lo, hi)
-    } else {
-        let ks = tables.table_k();
-        ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
-    }
-}
-
-fn draw(rng: &mut Rng, answered: bool) -> Point {
-    let m = Material {
-        gamma_sv: rng.log_uniform(0.01, 0.3),
-        young: rng.log_uniform(0.5e9, 200e9),
-        poisson: 0.1 + 0.35 * rng.next(),
-        density: rng.log_uniform(500.0, 5000.0),
-    };
-    let r = rng.log_uniform(5e-9, 1e-2);
-    let geometry = if rng.next() < 0.5 {
-        Geometry::wall(r)
-    } else {
-        Geometry::identical(2.0 * r)
-    };
-    let k = if answered {
-        answered_k(rng)
-    } else {
-        rng.log_uniform(0.005, 0.05)
-    };
-    Point {
-        contact: Contact::new(m, geometry).unwrap(),
-        k,
-        t_vis: rng.log_uniform(1e-16, 1e-3),
-    }
-}
+use domain::{draw, Point, Rng};
 
 fn percentile(sorted: &[f64], p: f64) -> f64 {
     if sorted.is_empty() {

@@ -16,34 +16,10 @@ use thresholds::{
     fit_t_vis, sticking_thresholds, SearchOptions, StickingThresholds, ThresholdMethod,
 };
 
-/// SplitMix64: fixed points, the same on every run.
-struct Rng(u64);
+#[path = "../examples/common/domain.rs"]
+mod domain;
 
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        (z ^ (z >> 31)) as f64 / u64::MAX as f64
-    }
-    /// A k the tables answer: log-uniform over their k range where the k checks cover every
-    /// interval between the tables, else one of the tables' own k (the tables are built one k at
-    /// a time; `cargo xtask master-table --part kcheck` opens the intervals).
-    fn answered_k(&mut self) -> f64 {
-        let tables = MasterTables::standard();
-        let (lo, hi) = tables.k_range();
-        if tables.k_checked() {
-            self.log_uniform(lo, hi)
-        } else {
-            let ks = tables.table_k();
-            ks[((self.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
-        }
-    }
-    fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo * (hi / lo).powf(self.next())
-    }
-}
+use domain::Rng;
 
 /// The table's answer and the search's agree: both thresholds within 1e-5, and the same
 /// verdict where there is no bouncing (or no double collision) below the search limit.
@@ -71,21 +47,9 @@ fn random_points_agree_with_the_search() {
     let (mut answered, mut compared) = (0, 0);
     let n = 80;
     for _ in 0..n {
-        let m = Material {
-            gamma_sv: rng.log_uniform(0.01, 0.3),
-            young: rng.log_uniform(0.5e9, 200e9),
-            poisson: 0.1 + 0.35 * rng.next(),
-            density: rng.log_uniform(500.0, 5000.0),
-        };
-        let r = rng.log_uniform(5e-9, 1e-2);
-        let g = if rng.next() < 0.5 {
-            Geometry::wall(r)
-        } else {
-            Geometry::identical(2.0 * r)
-        };
-        let law = CrackLaw::new(rng.answered_k()).unwrap();
-        let t_vis = rng.log_uniform(1e-16, 1e-3);
-        let c = Contact::new(m, g).unwrap();
+        let p = domain::draw(&mut rng, true);
+        let (m, g, c, t_vis) = (p.material, p.geometry, p.contact, p.t_vis);
+        let law = CrackLaw::new(p.k).unwrap();
         let t = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
         if t.method != ThresholdMethod::Table {
             continue;

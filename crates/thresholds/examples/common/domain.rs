@@ -1,0 +1,84 @@
+//! Random points over the domain of the "Instant everywhere" issue, drawn alike by
+//! `examples/table_accuracy.rs` (which measures the master tables there) and
+//! `tests/master_table.rs` (which holds them to the search there; it includes this file).
+
+use thresholds::{Contact, Geometry, MasterTables, Material};
+
+/// SplitMix64: a small deterministic generator, so that a run is repeatable.
+pub struct Rng(pub u64);
+
+impl Rng {
+    /// Uniform in [0, 1].
+    pub fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        (z ^ (z >> 31)) as f64 / u64::MAX as f64
+    }
+
+    /// Log-uniform between `lo` and `hi`.
+    pub fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
+        lo * (hi / lo).powf(self.next())
+    }
+
+    /// A k the tables answer: log-uniform over their k range where the k checks cover every
+    /// interval between the tables, else one of the tables' own k (the tables are built one k at
+    /// a time; `cargo xtask master-table --part kcheck` opens the intervals).
+    pub fn answered_k(&mut self) -> f64 {
+        let tables = MasterTables::standard();
+        let (lo, hi) = tables.k_range();
+        if tables.k_checked() {
+            self.log_uniform(lo, hi)
+        } else {
+            let ks = tables.table_k();
+            ks[((self.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+        }
+    }
+}
+
+/// One point of the domain.
+pub struct Point {
+    /// The material.
+    pub material: Material,
+    /// The bodies.
+    pub geometry: Geometry,
+    /// Their contact.
+    pub contact: Contact,
+    /// k.
+    pub k: f64,
+    /// T_vis (s).
+    pub t_vis: f64,
+}
+
+/// A point: gamma_SV (0.01-0.3 J/m^2), E (0.5-200 GPa), the density (500-5000 kg/m^3) and the
+/// reduced radius R (5 nm - 1 cm) log-uniformly, nu (0.1-0.45) uniformly, two identical spheres
+/// (R1 = 2R) or a sphere on a wall (R1 = R), k from what the tables answer
+/// ([`Rng::answered_k`]) if `answered`, else log-uniformly from 0.005 to 0.05, and T_vis
+/// log-uniformly from 1e-16 s to 1e-3 s.
+pub fn draw(rng: &mut Rng, answered: bool) -> Point {
+    let material = Material {
+        gamma_sv: rng.log_uniform(0.01, 0.3),
+        young: rng.log_uniform(0.5e9, 200e9),
+        poisson: 0.1 + 0.35 * rng.next(),
+        density: rng.log_uniform(500.0, 5000.0),
+    };
+    let r = rng.log_uniform(5e-9, 1e-2);
+    let geometry = if rng.next() < 0.5 {
+        Geometry::wall(r)
+    } else {
+        Geometry::identical(2.0 * r)
+    };
+    let k = if answered {
+        rng.answered_k()
+    } else {
+        rng.log_uniform(0.005, 0.05)
+    };
+    Point {
+        material,
+        geometry,
+        contact: Contact::new(material, geometry).expect("a valid contact"),
+        k,
+        t_vis: rng.log_uniform(1e-16, 1e-3),
+    }
+}
