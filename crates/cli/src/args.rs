@@ -320,7 +320,7 @@ impl PointArgs {
     }
 }
 
-/// The threshold-search settings shared by v-stick, fit-t-vis and v-frag.
+/// The threshold-search settings shared by v-stick, fit-t-vis, v-frag and sweep.
 #[derive(Debug, Clone, Args)]
 pub struct SearchArgs {
     /// Relative tolerance of the threshold brackets (dimensionless).
@@ -366,13 +366,18 @@ impl SearchArgs {
     /// The library's search options, recorded in `setup`'s inputs (the command records the
     /// `v_max` it searched up to).
     pub fn options(&self, setup: &mut Setup) -> thresholds::SearchOptions {
-        let method = thresholds::ThresholdMethod::from(self.method.method);
+        let options = self.search_options();
         setup.with_input("rel_tol", self.rel_tol);
-        setup.with_input("method", method.name());
+        setup.with_input("method", options.method.name());
+        options
+    }
+
+    /// The library's search options.
+    pub fn search_options(&self) -> thresholds::SearchOptions {
         thresholds::SearchOptions {
             rel_tol: self.rel_tol,
             v_max: self.v_max,
-            method,
+            method: self.method.method.into(),
             ..Default::default()
         }
     }

@@ -1,7 +1,7 @@
 //! The flags of `stickiness sweep` and what they determine: the grid, the search options and
 //! the header that identifies the sweep in its file.
 
-use crate::args::{BulkOverrides, MethodArg, Overrides};
+use crate::args::{BulkOverrides, Overrides, SearchArgs};
 use crate::error::CliError;
 use clap::{Args, ValueEnum};
 use numerics::format::number;
@@ -57,14 +57,8 @@ pub struct SweepArgs {
     /// Modulus ratios k (dimensionless): a comma list or START:STOP:N.
     #[arg(long, default_value = "0.01", allow_hyphen_values = true)]
     pub k: String,
-    /// Relative tolerance of the threshold brackets (dimensionless).
-    #[arg(long, default_value = "1e-6", allow_hyphen_values = true)]
-    pub rel_tol: f64,
-    /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; at most 10000.0).
-    #[arg(long, allow_hyphen_values = true)]
-    pub v_max: Option<f64>,
     #[command(flatten)]
-    pub method: MethodArg,
+    pub search: SearchArgs,
     /// The output file.
     #[arg(long, value_name = "FILE.csv")]
     pub out: PathBuf,
@@ -136,12 +130,7 @@ impl SweepArgs {
             k: axis("--k", &self.k)?,
         };
         grid.validate()?;
-        let options = SearchOptions {
-            rel_tol: self.rel_tol,
-            v_max: self.v_max,
-            method: self.method.method.into(),
-            ..SearchOptions::default()
-        };
+        let options = self.search.search_options();
         options.validate()?;
         let header = header_text(self.format.into(), &header_lines(&self.command(), &grid));
         Ok((grid, options, header))
@@ -169,13 +158,13 @@ impl SweepArgs {
             (None, None) => {}
         }
         command.push(format!("--k {}", canonical(&self.k)));
-        command.push(format!("--rel-tol {}", number(self.rel_tol)));
-        if let Some(v) = self.v_max {
+        command.push(format!("--rel-tol {}", number(self.search.rel_tol)));
+        if let Some(v) = self.search.v_max {
             command.push(format!("--v-max {}", number(v)));
         }
         // always written: the default changed from search to table, and a resume must not mix
         // the two
-        let method: thresholds::ThresholdMethod = self.method.method.into();
+        let method: thresholds::ThresholdMethod = self.search.method.method.into();
         command.push(format!("--method {}", method.name()));
         let format: thresholds::sweep::Format = self.format.into();
         command.push(format!("--format {}", format.name()));
