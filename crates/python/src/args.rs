@@ -123,6 +123,22 @@ impl<'a> Elements<'a> {
     pub fn law(&self, i: usize) -> Result<&CrackLaw, Error> {
         self.laws.get(self.k[i], i)
     }
+
+    /// `f(i, contact of i)` of every element on all cores ([`crate::parallel::map`]), each with
+    /// the contact's warnings followed by those `f` gives.
+    pub fn map<T: Send>(
+        &self,
+        py: Python<'_>,
+        f: impl Fn(usize, &Contact) -> Result<(T, Warned), Error> + Sync + Send,
+    ) -> PyResult<Vec<(T, Warned)>> {
+        crate::parallel::map(py, self.n, |i| {
+            let c = self.contact(i)?;
+            let (value, mut own) = f(i, &c)?;
+            let mut all = warned(i, c.warnings());
+            all.append(&mut own);
+            Ok((value, all))
+        })
+    }
 }
 
 thread_local! {
@@ -208,16 +224,22 @@ pub fn warned(i: usize, warnings: impl IntoIterator<Item = Warning>) -> Warned {
         .collect()
 }
 
-/// Columns of f64 results and the warnings, as a dict of flat arrays.
+/// Columns of f64 results, the `"method"` column (the code of the method that answered each
+/// element, if the function says), and the warnings, as a dict of flat arrays.
 pub fn columns<'py, const N: usize>(
     py: Python<'py>,
     names: [&str; N],
     rows: &[([f64; N], Warned)],
+    methods: Option<&[ThresholdMethod]>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let dict = PyDict::new(py);
     for (j, name) in names.iter().enumerate() {
         let col: Vec<f64> = rows.iter().map(|r| r.0[j]).collect();
         dict.set_item(*name, PyArray1::from_vec(py, col))?;
+    }
+    if let Some(methods) = methods {
+        let codes: Vec<u8> = methods.iter().map(|&m| method_code(m)).collect();
+        dict.set_item("method", PyArray1::from_vec(py, codes))?;
     }
     let warnings: Warned = rows.iter().flat_map(|r| r.1.iter().cloned()).collect();
     dict.set_item("warnings", warnings)?;
@@ -253,3 +275,77 @@ pub fn search_options(v_max: Option<f64>, rel_tol: f64, name: &str) -> PyResult<
         ..SearchOptions::default()
     })
 }
+
+/// Defines a vectorised `#[pyfunction]` of bodies in contact, whose arguments are converted,
+/// checked and broadcast here once:
+///
+/// ```text
+/// elementwise! {
+///     /// docs
+///     fn name(py, e: Elements[a, b; k; gamma_sv], opt: Type, opt2: Type = "default") { body }
+/// }
+/// ```
+///
+/// is `pub fn name(material, radius, radius2, wall, a, b, k, opt, opt2="default",
+/// gamma_sv=None)` in Python (`k` and `gamma_sv` only where named between the brackets): in
+/// `body`, `a` and `b` are the contiguous `&[f64]` of the flat arrays `a` and `b`, and `e` the
+/// [`Elements`] of the call (the common length of every array checked); `body` gives the dict
+/// of columns. A threshold search names `opts: SearchOptions` as its only option: the arguments
+/// `v_max, rel_tol, method`, the [`search_options`] of them in `body`.
+macro_rules! elementwise {
+    // a threshold search: `opts: SearchOptions` stands for the arguments `v_max, rel_tol, method`
+    // and is their `SearchOptions` in the body
+    (
+        $(#[$attr:meta])*
+        fn $name:ident($py:ident, $e:ident: Elements[$($arrays:tt)*], $o:ident: SearchOptions)
+        $body:block
+    ) => {
+        $crate::args::elementwise! {
+            $(#[$attr])*
+            fn $name($py, $e: Elements[$($arrays)*], v_max: Option<f64>, rel_tol: f64, method: &str) {
+                let $o = $crate::args::search_options(v_max, rel_tol, method)?;
+                $body
+            }
+        }
+    };
+    (
+        $(#[$attr:meta])*
+        fn $name:ident(
+            $py:ident,
+            $e:ident: Elements[$($own:ident),*; $($k:ident)?; $($gamma:ident)?]
+            $(, $opt:ident: $ty:ty $(= $default:tt)?)* $(,)?
+        ) $body:block
+    ) => {
+        $(#[$attr])*
+        #[pyfunction]
+        #[pyo3(signature = (
+            material, radius, radius2, wall, $($own,)* $($k,)? $($opt $(= $default)?,)*
+            $($gamma = None)?
+        ))]
+        #[allow(clippy::too_many_arguments)]
+        pub fn $name<'py>(
+            $py: Python<'py>,
+            material: $crate::material::Material,
+            radius: $crate::args::Array<'py>,
+            radius2: Option<$crate::args::Array<'py>>,
+            wall: bool,
+            $($own: $crate::args::Array<'py>,)*
+            $($k: $crate::args::Array<'py>,)?
+            $($opt: $ty,)*
+            $($gamma: Option<$crate::args::Array<'py>>,)?
+        ) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
+            $(let $own = $crate::args::data(&$own, stringify!($own))?;)*
+            let $e = $crate::args::Elements::new(
+                &material,
+                None $(.or($gamma.as_ref()))?,
+                &radius,
+                radius2.as_ref(),
+                wall,
+                None $(.or(Some(&$k)))?,
+                &[$((stringify!($own), $own)),*],
+            )?;
+            $body
+        }
+    };
+}
+pub(crate) use elementwise;

@@ -2,10 +2,9 @@
 //! the JKR contact, single collisions and the size laws (the conversions: [`crate::args`]).
 
 use crate::args::{
-    columns, common_len, data, method, method_code, or_nan, warned, Array, Elements, Laws, Warned,
+    columns, common_len, data, elementwise, method_code, or_nan, warned, Array, Laws, Warned,
 };
 use crate::error::Error;
-use crate::material::Material;
 use crate::parallel;
 use numpy::PyArray1;
 use pyo3::exceptions::PyValueError;
@@ -33,112 +32,74 @@ pub fn crack_speed<'py>(
     Ok(PyArray1::from_vec(py, v))
 }
 
-/// JKR contact: a_eq, delta_eq (m), tabor, f_crit (N), delta_crit (m), e_stick, e_break (J),
-/// v_stick_jkr (m/s).
-#[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall))]
-pub fn jkr<'py>(
-    py: Python<'py>,
-    material: Material,
-    radius: Array<'py>,
-    radius2: Option<Array<'py>>,
-    wall: bool,
-) -> PyResult<Bound<'py, PyDict>> {
-    let e = Elements::new(&material, None, &radius, radius2.as_ref(), wall, None, &[])?;
-    let rows = parallel::map(py, e.n, |i| {
-        let c = e.contact(i)?;
-        Ok((c.jkr_values(), warned(i, c.warnings())))
-    })?;
-    columns(py, thresholds::JKR_QUANTITIES.map(|q| q.0), &rows)
-}
-
-/// The two dimensionless numbers of a collision (`Contact::dimensionless`): the drag number
-/// c_d and the crack-speed number c_a, and the JKR time unit t0 (s).
-#[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, t_vis, gamma_sv=None))]
-pub fn dimensionless<'py>(
-    py: Python<'py>,
-    material: Material,
-    radius: Array<'py>,
-    radius2: Option<Array<'py>>,
-    wall: bool,
-    t_vis: Array<'py>,
-    gamma_sv: Option<Array<'py>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let t_vis = data(&t_vis, "t_vis")?;
-    let e = Elements::new(
-        &material,
-        gamma_sv.as_ref(),
-        &radius,
-        radius2.as_ref(),
-        wall,
-        None,
-        &[("t_vis", t_vis)],
-    )?;
-    let rows = parallel::map(py, e.n, |i| {
-        let c = e.contact(i)?;
-        numerics::positive("t_vis", t_vis[i], "s").map_err(|bad| Error::Input { bad, index: i })?;
-        let d = c.dimensionless(t_vis[i]);
-        Ok(([d.c_d, d.c_a, c.t0()], warned(i, c.warnings())))
-    })?;
-    columns(py, ["c_d", "c_a", "t0"], &rows)
-}
-
-/// One head-on collision per element: outcome, e, v_out (m/s), contact_time (s; NaN for
-/// sticking, and where the restitution tables answered), v_stick_jkr (m/s), method (0: the ODE,
-/// 1: the tables); with `trajectory` (one element only, always the ODE) the recorded states.
-#[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, t_vis, v_in, k, t_end, trajectory, method="search", gamma_sv=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn collide<'py>(
-    py: Python<'py>,
-    material: Material,
-    radius: Array<'py>,
-    radius2: Option<Array<'py>>,
-    wall: bool,
-    t_vis: Array<'py>,
-    v_in: Array<'py>,
-    k: Array<'py>,
-    t_end: Option<f64>,
-    trajectory: bool,
-    method: &str,
-    gamma_sv: Option<Array<'py>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let (t_vis, v_in) = (data(&t_vis, "t_vis")?, data(&v_in, "v_in")?);
-    let e = Elements::new(
-        &material,
-        gamma_sv.as_ref(),
-        &radius,
-        radius2.as_ref(),
-        wall,
-        Some(&k),
-        &[("t_vis", t_vis), ("v_in", v_in)],
-    )?;
-    if trajectory && e.n != 1 {
-        return Err(PyValueError::new_err(
-            "trajectory: only for one collision (scalar arguments)",
-        ));
+elementwise! {
+    /// JKR contact: a_eq, delta_eq (m), tabor, f_crit (N), delta_crit (m), e_stick, e_break (J),
+    /// v_stick_jkr (m/s).
+    fn jkr(py, e: Elements[;;]) {
+        let rows = e.map(py, |_, c| Ok((c.jkr_values(), Vec::new())))?;
+        columns(py, thresholds::JKR_QUANTITIES.map(|q| q.0), &rows, None)
     }
-    let method = self::method(method)?;
-    let opts = SolverOptions {
-        record_trajectory: trajectory,
-        decide_after: t_end.unwrap_or(0.0),
-        ..SolverOptions::default()
-    };
-    let runs = parallel::map(py, e.n, |i| {
-        let c = e.contact(i)?;
-        let mut w = warned(i, c.warnings());
-        w.extend(warned(i, Warning::for_speed("v_in", v_in[i])));
-        let (run, answered) =
-            thresholds::restitution::collision(&c, e.law(i)?, t_vis[i], v_in[i], &opts, method)
-                .map_err(|err| Error::from_thresholds(err, i))?;
-        Ok((run, c.v_stick_jkr(), w, answered))
-    })?;
+}
+
+elementwise! {
+    /// The two dimensionless numbers of a collision (`Contact::dimensionless`): the drag number
+    /// c_d and the crack-speed number c_a, and the JKR time unit t0 (s).
+    fn dimensionless(py, e: Elements[t_vis;; gamma_sv]) {
+        let rows = e.map(py, |i, c| {
+            numerics::positive("t_vis", t_vis[i], "s").map_err(|bad| Error::Input { bad, index: i })?;
+            let d = c.dimensionless(t_vis[i]);
+            Ok(([d.c_d, d.c_a, c.t0()], Vec::new()))
+        })?;
+        columns(py, ["c_d", "c_a", "t0"], &rows, None)
+    }
+}
+
+/// What one collision gives: the run, V_stick,JKR and which method answered.
+type Run = (thresholds::Collision, f64, ThresholdMethod);
+
+elementwise! {
+    /// One head-on collision per element: outcome, e, v_out (m/s), contact_time (s; NaN for
+    /// sticking, and where the restitution tables answered), v_stick_jkr (m/s), method (0: the ODE,
+    /// 1: the tables); with `trajectory` (one element only, always the ODE) the recorded states.
+    fn collide(
+        py,
+        e: Elements[t_vis, v_in; k; gamma_sv],
+        t_end: Option<f64>,
+        trajectory: bool,
+        method: &str = "search",
+    ) {
+        if trajectory && e.n != 1 {
+            return Err(PyValueError::new_err(
+                "trajectory: only for one collision (scalar arguments)",
+            ));
+        }
+        let method = crate::args::method(method)?;
+        let opts = SolverOptions {
+            record_trajectory: trajectory,
+            decide_after: t_end.unwrap_or(0.0),
+            ..SolverOptions::default()
+        };
+        let runs = e.map(py, |i, c| {
+            let (run, answered) =
+                thresholds::restitution::collision(c, e.law(i)?, t_vis[i], v_in[i], &opts, method)
+                    .map_err(|err| Error::from_thresholds(err, i))?;
+            let w = warned(i, Warning::for_speed("v_in", v_in[i]));
+            Ok(((run, c.v_stick_jkr(), answered), w))
+        })?;
+        collision_columns(py, &runs, trajectory)
+    }
+}
+
+/// The dict of [`collide`]'s columns.
+fn collision_columns<'py>(
+    py: Python<'py>,
+    runs: &[(Run, Warned)],
+    trajectory: bool,
+) -> PyResult<Bound<'py, PyDict>> {
     let dict = PyDict::new(py);
-    let outcomes: Vec<&str> = runs.iter().map(|r| r.0.outcome.as_str()).collect();
+    let outcomes: Vec<&str> = runs.iter().map(|r| r.0 .0.outcome.as_str()).collect();
     dict.set_item("outcome", outcomes)?;
-    type Run = (thresholds::Collision, f64, Warned, ThresholdMethod);
-    let column = |f: &dyn Fn(&Run) -> f64| -> Vec<f64> { runs.iter().map(f).collect() };
+    let column = |f: &dyn Fn(&Run) -> f64| -> Vec<f64> { runs.iter().map(|r| f(&r.0)).collect() };
     dict.set_item("e", PyArray1::from_vec(py, column(&|r| r.0.e)))?;
     // what an experiment sees: e = 0 for sticking and double collisions (Section 4.4)
     dict.set_item(
@@ -151,24 +112,24 @@ pub fn collide<'py>(
         PyArray1::from_vec(py, column(&|r| or_nan(r.0.contact_time))),
     )?;
     dict.set_item("v_stick_jkr", PyArray1::from_vec(py, column(&|r| r.1)))?;
-    let methods: Vec<u8> = runs.iter().map(|r| method_code(r.3)).collect();
+    let methods: Vec<u8> = runs.iter().map(|r| method_code(r.0 .2)).collect();
     dict.set_item("method", PyArray1::from_vec(py, methods))?;
     let sticking: Vec<Option<&str>> = runs
         .iter()
         .map(|r| {
-            r.0.sticking_criterion.map(|c| match c {
+            r.0 .0.sticking_criterion.map(|c| match c {
                 StickingCriterion::EnergyBound => "energy_bound",
                 StickingCriterion::Oscillations => "oscillations",
             })
         })
         .collect();
     dict.set_item("sticking_criterion", sticking)?;
-    let warnings: Warned = runs.iter().flat_map(|r| r.2.iter().cloned()).collect();
+    let warnings: Warned = runs.iter().flat_map(|r| r.1.iter().cloned()).collect();
     dict.set_item("warnings", warnings)?;
     if trajectory {
         if let Some(run) = runs.first() {
             let traj = PyDict::new(py);
-            let pts = &run.0.trajectory;
+            let pts = &run.0 .0.trajectory;
             type Pick = fn(&thresholds::TrajectoryPoint) -> f64;
             let fields: [(&str, Pick); 6] = [
                 ("t", |p| p.t),

@@ -2,193 +2,125 @@
 //! each element answered by the master tables or the exact search (`method`), with a
 //! `"method"` column saying which answered (0: search, 1: table).
 
-use crate::args::{method_code, or_nan, search_options, warned, Array, Elements, Warned};
+use crate::args::{columns, elementwise, or_nan, Elements, Warned};
 use crate::error::Error;
-use crate::material::Material;
-use crate::parallel;
-use numpy::PyArray1;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use thresholds::{Contact, CrackLaw, FitWarning, ThresholdMethod, ThresholdsError};
+use thresholds::{
+    Contact, CrackLaw, FitWarning, Fragmentation, StickingThresholds, TVisFit, ThresholdMethod,
+    ThresholdsError,
+};
 
-/// What one element gives: its values (in the order of the call's names), the method that
-/// answered, and its warnings.
-type Answer<const N: usize> = ([f64; N], ThresholdMethod, Warned);
+/// What a threshold function computes for one element.
+trait Answer: Send {
+    /// Which method answered.
+    fn method(&self) -> ThresholdMethod;
+}
 
-/// The elements of a threshold function: element `i` is `f(i, contact, law)`; a dict of the
-/// columns `names`, `"method"` and `"warnings"`.
-fn per_element<'py, const N: usize>(
+impl Answer for StickingThresholds {
+    fn method(&self) -> ThresholdMethod {
+        self.method
+    }
+}
+
+impl Answer for Fragmentation {
+    fn method(&self) -> ThresholdMethod {
+        self.method
+    }
+}
+
+impl Answer for TVisFit {
+    fn method(&self) -> ThresholdMethod {
+        self.method
+    }
+}
+
+/// A column of a threshold function: its name and its value in an element's answer (NaN for
+/// `None`).
+type Column<T> = (&'static str, fn(&T) -> Option<f64>);
+
+/// The elements of a threshold function: element `i` answers `f(i, contact, law)` (with its
+/// warnings); a dict of the `columns`, `"method"` and `"warnings"`.
+fn per_element<'py, T: Answer, const N: usize>(
     py: Python<'py>,
     e: &Elements<'_>,
-    names: [&str; N],
-    f: impl Fn(usize, &Contact, &CrackLaw) -> Result<Answer<N>, ThresholdsError> + Sync + Send,
+    cols: [Column<T>; N],
+    f: impl Fn(usize, &Contact, &CrackLaw) -> Result<(T, Warned), ThresholdsError> + Sync + Send,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let rows = parallel::map(py, e.n, |i| {
-        let c = e.contact(i)?;
-        let (values, method, mut w) =
-            f(i, &c, e.law(i)?).map_err(|err| Error::from_thresholds(err, i))?;
-        let mut all = warned(i, c.warnings());
-        all.append(&mut w);
-        Ok((values, method, all))
+    let rows = e.map(py, |i, c| {
+        f(i, c, e.law(i)?).map_err(|err| Error::from_thresholds(err, i))
     })?;
-    let dict = PyDict::new(py);
-    for (j, name) in names.iter().enumerate() {
-        let col: Vec<f64> = rows.iter().map(|r| r.0[j]).collect();
-        dict.set_item(*name, PyArray1::from_vec(py, col))?;
+    let methods: Vec<ThresholdMethod> = rows.iter().map(|r| r.0.method()).collect();
+    let values: Vec<([f64; N], Warned)> = rows
+        .into_iter()
+        .map(|(answer, w)| (cols.map(|c| or_nan(c.1(&answer))), w))
+        .collect();
+    columns(py, cols.map(|c| c.0), &values, Some(&methods))
+}
+
+/// The columns of [`v_stick`].
+const V_STICK: [Column<StickingThresholds>; 5] = [
+    ("v_stick", |t| t.v_stick),
+    ("v_double_onset", |t| t.v_double_onset),
+    ("v_stick_jkr", |t| Some(t.v_stick_jkr)),
+    ("no_bouncing_below", StickingThresholds::no_bouncing_below),
+    ("v_max", |t| Some(t.v_max)),
+];
+
+elementwise! {
+    /// V_stick, V_double_onset, V_stick,JKR, no_bouncing_below and v_max (m/s; NaN where none);
+    /// `gamma_sv` (J/m^2), if given, replaces the material's per element.
+    fn v_stick(py, e: Elements[t_vis; k; gamma_sv], opts: SearchOptions) {
+        per_element(py, &e, V_STICK, |i, c, law| {
+            Ok((thresholds::sticking_thresholds(c, law, t_vis[i], &opts)?, Vec::new()))
+        })
     }
-    let methods: Vec<u8> = rows.iter().map(|r| method_code(r.1)).collect();
-    dict.set_item("method", PyArray1::from_vec(py, methods))?;
-    let warnings: Warned = rows.into_iter().flat_map(|r| r.2).collect();
-    dict.set_item("warnings", warnings)?;
-    Ok(dict)
 }
 
-/// V_stick, V_double_onset, V_stick,JKR, no_bouncing_below and v_max (m/s; NaN where none);
-/// `gamma_sv` (J/m^2), if given, replaces the material's per element.
-#[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, t_vis, k, v_max, rel_tol, method, gamma_sv=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn v_stick<'py>(
-    py: Python<'py>,
-    material: Material,
-    radius: Array<'py>,
-    radius2: Option<Array<'py>>,
-    wall: bool,
-    t_vis: Array<'py>,
-    k: Array<'py>,
-    v_max: Option<f64>,
-    rel_tol: f64,
-    method: &str,
-    gamma_sv: Option<Array<'py>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let t_vis = crate::args::data(&t_vis, "t_vis")?;
-    let e = Elements::new(
-        &material,
-        gamma_sv.as_ref(),
-        &radius,
-        radius2.as_ref(),
-        wall,
-        Some(&k),
-        &[("t_vis", t_vis)],
-    )?;
-    let opts = search_options(v_max, rel_tol, method)?;
-    let names = [
-        "v_stick",
-        "v_double_onset",
-        "v_stick_jkr",
-        "no_bouncing_below",
-        "v_max",
-    ];
-    per_element(py, &e, names, |i, c, law| {
-        let th = thresholds::sticking_thresholds(c, law, t_vis[i], &opts)?;
-        let values = [
-            or_nan(th.v_stick),
-            or_nan(th.v_double_onset),
-            th.v_stick_jkr,
-            or_nan(th.no_bouncing_below()),
-            th.v_max,
-        ];
-        Ok((values, th.method, Vec::new()))
-    })
+/// The columns of [`v_frag`].
+const V_FRAG: [Column<Fragmentation>; 6] = [
+    ("v_frag", |f| f.v_frag),
+    ("v_stick", |f| f.v_stick),
+    ("t_vis", |f| Some(f.t_vis)),
+    ("v_frag_jkr", |f| Some(f.v_frag_jkr)),
+    ("v_stick_jkr", |f| Some(f.v_stick_jkr)),
+    ("no_bouncing_below", |f| f.no_bouncing_below),
+];
+
+elementwise! {
+    /// V_frag = 10 V_stick with V_stick, T_vis, V_frag,JKR, V_stick,JKR, no_bouncing_below.
+    fn v_frag(py, e: Elements[t_vis; k; gamma_sv], opts: SearchOptions) {
+        per_element(py, &e, V_FRAG, |i, c, law| {
+            Ok((thresholds::fragmentation(c, law, t_vis[i], &opts)?, Vec::new()))
+        })
+    }
 }
 
-/// V_frag = 10 V_stick with V_stick, T_vis, V_frag,JKR, V_stick,JKR, no_bouncing_below.
-#[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, t_vis, k, v_max, rel_tol, method, gamma_sv=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn v_frag<'py>(
-    py: Python<'py>,
-    material: Material,
-    radius: Array<'py>,
-    radius2: Option<Array<'py>>,
-    wall: bool,
-    t_vis: Array<'py>,
-    k: Array<'py>,
-    v_max: Option<f64>,
-    rel_tol: f64,
-    method: &str,
-    gamma_sv: Option<Array<'py>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let t_vis = crate::args::data(&t_vis, "t_vis")?;
-    let e = Elements::new(
-        &material,
-        gamma_sv.as_ref(),
-        &radius,
-        radius2.as_ref(),
-        wall,
-        Some(&k),
-        &[("t_vis", t_vis)],
-    )?;
-    let opts = search_options(v_max, rel_tol, method)?;
-    let names = [
-        "v_frag",
-        "v_stick",
-        "t_vis",
-        "v_frag_jkr",
-        "v_stick_jkr",
-        "no_bouncing_below",
-    ];
-    per_element(py, &e, names, |i, c, law| {
-        let f = thresholds::fragmentation(c, law, t_vis[i], &opts)?;
-        let values = [
-            or_nan(f.v_frag),
-            or_nan(f.v_stick),
-            f.t_vis,
-            f.v_frag_jkr,
-            f.v_stick_jkr,
-            or_nan(f.no_bouncing_below),
-        ];
-        Ok((values, f.method, Vec::new()))
-    })
-}
+/// The columns of [`fit_t_vis`].
+const FIT: [Column<TVisFit>; 4] = [
+    ("t_vis", |f| Some(f.t_vis)),
+    ("t_vis_min", |f| Some(f.t_vis_min)),
+    ("t_vis_max", |f| Some(f.t_vis_max)),
+    ("v_stick_jkr", |f| Some(f.v_stick_jkr)),
+];
 
-/// T_vis (s) reproducing a measured V_stick, with the range for its uncertainty.
-#[pyfunction]
-#[pyo3(signature = (material, radius, radius2, wall, v_stick, v_stick_err, k, v_max, rel_tol, method, gamma_sv=None))]
-#[allow(clippy::too_many_arguments)]
-pub fn fit_t_vis<'py>(
-    py: Python<'py>,
-    material: Material,
-    radius: Array<'py>,
-    radius2: Option<Array<'py>>,
-    wall: bool,
-    v_stick: Array<'py>,
-    v_stick_err: Array<'py>,
-    k: Array<'py>,
-    v_max: Option<f64>,
-    rel_tol: f64,
-    method: &str,
-    gamma_sv: Option<Array<'py>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let (v, dv) = (
-        crate::args::data(&v_stick, "v_stick")?,
-        crate::args::data(&v_stick_err, "v_stick_err")?,
-    );
-    let e = Elements::new(
-        &material,
-        gamma_sv.as_ref(),
-        &radius,
-        radius2.as_ref(),
-        wall,
-        Some(&k),
-        &[("v_stick", v), ("v_stick_err", dv)],
-    )?;
-    let opts = search_options(v_max, rel_tol, method)?;
-    let names = ["t_vis", "t_vis_min", "t_vis_max", "v_stick_jkr"];
-    per_element(py, &e, names, |i, c, law| {
-        let fit = thresholds::fit_t_vis(c, law, v[i], dv[i], &opts)?;
-        let w = fit
-            .warnings()
-            .iter()
-            .map(|f| {
-                let kind = match f {
-                    FitWarning::AboveDefaultSearchLimit { .. } => "fit_v_max",
-                    FitWarning::LowerEndAtJkr { .. } => "fit_jkr",
-                };
-                (i, kind, f.message_for("v_max="))
-            })
-            .collect();
-        let values = [fit.t_vis, fit.t_vis_min, fit.t_vis_max, fit.v_stick_jkr];
-        Ok((values, fit.method, w))
-    })
+elementwise! {
+    /// T_vis (s) reproducing a measured V_stick, with the range for its uncertainty.
+    fn fit_t_vis(py, e: Elements[v_stick, v_stick_err; k; gamma_sv], opts: SearchOptions) {
+        per_element(py, &e, FIT, |i, c, law| {
+            let fit = thresholds::fit_t_vis(c, law, v_stick[i], v_stick_err[i], &opts)?;
+            let w = fit
+                .warnings()
+                .iter()
+                .map(|f| {
+                    let kind = match f {
+                        FitWarning::AboveDefaultSearchLimit { .. } => "fit_v_max",
+                        FitWarning::LowerEndAtJkr { .. } => "fit_jkr",
+                    };
+                    (i, kind, f.message_for("v_max="))
+                })
+                .collect();
+            Ok((fit, w))
+        })
+    }
 }
