@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import sys
 import warnings
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -157,6 +157,22 @@ def method(value: Any) -> str:
     if not isinstance(value, str) or value.lower() not in METHODS:
         raise ValueError(f"method = {value!r}: must be 'search' or 'table'")
     return value.lower()
+
+
+def keyed(
+    name: str, value: Any, form: str, keys: Sequence[str], unknown: str
+) -> Iterator[Tuple[str, Any]]:
+    """The items of ``value``, a dict of the ``form`` (None: none) whose keys are among ``keys``;
+    ``ValueError`` naming ``name`` for anything else (``unknown``, with ``{key}`` and ``{keys}``
+    filled in, for a key not among them)."""
+    if value is None:
+        return
+    if not isinstance(value, dict):
+        raise ValueError(f"{name}: expected a dict {form}, got {type(value).__name__}")
+    for key, item in value.items():
+        if key not in keys:
+            raise ValueError(f"{name}: " + unknown.format(key=key, keys=tuple(keys)))
+        yield key, item
 
 
 def law_name(name: str, value: Any, required: bool = False) -> Optional[str]:

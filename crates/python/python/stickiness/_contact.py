@@ -98,8 +98,7 @@ def jkr(
     ----------
     {material}
     {radius}
-    {radius2}
-    {wall}
+    {partner}
 
     Returns
     -------
@@ -150,8 +149,7 @@ def dimensionless(
     {radius}
     t_vis : float, array_like or Quantity
         Viscoelastic relaxation time T_vis (s, > 0).
-    {radius2}
-    {wall}
+    {partner}
 
     Returns
     -------

@@ -58,6 +58,18 @@ PARAMETERS: Dict[str, str] = {
         A computation failed (the ODE solver); the message names the parameters.""",
 }
 
+#: Parameters that always come together, under one name: the second body (``radius2``,
+#: ``wall``) and the search settings (``v_max``, ``rel_tol``, ``method``).
+PARAMETERS.update(
+    {
+        group: "\n    ".join(PARAMETERS[name] for name in names)
+        for group, names in (
+            ("partner", ("radius2", "wall")),
+            ("search", ("v_max", "rel_tol", "method")),
+        )
+    }
+)
+
 
 def shared(fn: F) -> F:
     """Fills the ``{name}`` fields of ``fn``'s docstring from :data:`PARAMETERS`."""

@@ -43,8 +43,7 @@ def collide(
     v_in : float, array_like or Quantity
         Impact speed V_in (m/s, > 0).
     {k}
-    {radius2}
-    {wall}
+    {partner}
     {t_vis_law}
     trajectory : bool, optional
         Record every solver step (scalar arguments only). Default False.
@@ -164,12 +163,9 @@ def v_stick(
     {radius}
     {t_vis}
     {k}
-    {radius2}
-    {wall}
+    {partner}
     {t_vis_law}
-    {v_max}
-    {rel_tol}
-    {method}
+    {search}
 
     Returns
     -------
@@ -236,12 +232,9 @@ def v_frag(
     t_vis : float, array_like or Quantity, optional
         Relaxation time T_vis (s, >= 0). Default 0: the JKR limit, V_frag,JKR.
     {k}
-    {radius2}
-    {wall}
+    {partner}
     {t_vis_law}
-    {v_max}
-    {rel_tol}
-    {method}
+    {search}
 
     Returns
     -------
@@ -298,11 +291,8 @@ def fit_t_vis(
     v_stick_err : float, array_like or Quantity, optional
         Its uncertainty dV (m/s, 0 <= dV < V_stick). Default 0.
     {k}
-    {radius2}
-    {wall}
-    {v_max}
-    {rel_tol}
-    {method}
+    {partner}
+    {search}
 
     Returns
     -------

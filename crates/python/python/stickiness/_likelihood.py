@@ -137,15 +137,8 @@ def priors(free: Sequence[str], given: Any, material: Material) -> Dict[str, Tup
             material.gamma_sv * DEFAULT_GAMMA_FACTOR,
         ),
     }
-    if given is None:
-        given = {}
-    if not isinstance(given, dict):
-        raise ValueError(f"priors: expected a dict {{name: (lo, hi)}}, got {type(given).__name__}")
-    for name, bounds in given.items():
-        if name not in free:
-            raise ValueError(
-                f"priors: {name!r} is not a free parameter (free = {tuple(free)!r})"
-            )
+    unknown = "{key!r} is not a free parameter (free = {keys!r})"
+    for name, bounds in _args.keyed("priors", given, "{name: (lo, hi)}", free, unknown):
         if not isinstance(bounds, (tuple, list)) or len(bounds) != 2:
             raise ValueError(f"priors: {name}: expected (lo, hi) in {PARAMETERS[name]}")
         lo = _args.scalar(f"priors[{name!r}]", _args.si(name, bounds[0]))

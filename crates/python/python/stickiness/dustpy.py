@@ -100,13 +100,8 @@ class VFragProfile:
             )
         if width is not None and not (math.isfinite(width) and width > 0):
             raise ValueError(f"width = {width!r}: must be > 0 and finite (K), or None")
-        if posteriors is None:
-            posteriors = {}
-        if not isinstance(posteriors, dict):
-            raise ValueError(f"posteriors: expected a dict {{'co2' | 'h2o': Posterior}}, got {type(posteriors).__name__}")
-        for ice, post in posteriors.items():
-            if ice not in _ICES:
-                raise ValueError(f"posteriors: unknown ice {ice!r}; allowed: {tuple(_ICES)}")
+        form, unknown = "{'co2' | 'h2o': Posterior}", "unknown ice {key!r}; allowed: {keys}"
+        for ice, post in _args.keyed("posteriors", posteriors, form, tuple(_ICES), unknown):
             if not isinstance(post, Posterior):
                 raise ValueError(f"posteriors[{ice!r}]: expected a stickiness.Posterior, got {type(post).__name__}")
         quantile = _args.scalar("quantile", quantile)
@@ -114,7 +109,7 @@ class VFragProfile:
             raise ValueError(f"quantile = {quantile!r}: must be within 0 .. 1")
         self.monomer_radius = radius
         #: Posteriors of T_vis per ice (``'co2'``, ``'h2o'``) replacing the Section 5.3 laws.
-        self.posteriors: Dict[str, Posterior] = dict(posteriors)
+        self.posteriors: Dict[str, Posterior] = dict(posteriors or {})
         #: The posterior quantile of V_frag used for the ices in :attr:`posteriors`.
         self.quantile = float(quantile)
         self.t_h2o = float(t_h2o)

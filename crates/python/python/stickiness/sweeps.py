@@ -157,12 +157,9 @@ def sweep(
         material's.
     k : float or array_like, optional
         Modulus ratios k (dimensionless; innermost axis). Default 0.01.
-    {radius2}
-    {wall}
+    {partner}
     {t_vis_law}
-    {v_max}
-    {rel_tol}
-    {method}
+    {search}
     client : dask.distributed.Client, optional
         Map the grid's chunks over its workers (a LocalCluster or a Slurm cluster alike), with
         the same result. Default None: all cores of this process.
