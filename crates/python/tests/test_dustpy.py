@@ -89,15 +89,32 @@ def test_a_short_run_stays_finite():
     assert np.all(np.asarray(sim.dust.Sigma) >= 0)
 
 
-def test_snowlines_example_runs(tmp_path, root):
-    out = tmp_path / "snow.png"
+def test_case_study_runs(tmp_path, root):
+    # the smoke test of examples/dustpy/case_study.py: a tiny grid, a few years, short chains
+    data = tmp_path / "runs.npz"
     done = subprocess.run(
-        [sys.executable, str(root / "examples" / "dustpy" / "snowlines.py"), "--years", "10",
-         "--out", str(out)],
+        [sys.executable, str(root / "examples" / "dustpy" / "case_study.py"), "--years", "10",
+         "--nr", "12", "--mmax", "1e3", "--steps", "60", "--processes", "2", "--out-dir",
+         str(tmp_path), "--data", str(data)],
         capture_output=True, text=True, cwd=tmp_path, timeout=900,
     )
     assert done.returncode == 0, done.stderr
-    assert out.stat().st_size > 10_000
+    for figure in ("dustpy_case_study.png", "dustpy_case_study_profiles.png"):
+        assert (tmp_path / figure).stat().st_size > 10_000
+    # the constant run has V_frag = 10 m/s everywhere; the physics runs the refractory value
+    # inside the H2O snow line (the script's --v-frag-refractory, 1 m/s)
+    saved = np.load(data, allow_pickle=True)
+    assert set(saved.files) == {"constant", "q16", "median", "q84"}
+    assert np.allclose(saved["constant"].item()["v_frag"], 10.0)
+    median = saved["median"].item()
+    hot = median["T"] > sd.T_H2O
+    assert hot.any() and np.allclose(median["v_frag"][hot], 1.0)
+    replot = subprocess.run(
+        [sys.executable, str(root / "examples" / "dustpy" / "case_study.py"), "--replot",
+         "--out-dir", str(tmp_path), "--data", str(data)],
+        capture_output=True, text=True, cwd=tmp_path, timeout=300,
+    )
+    assert replot.returncode == 0, replot.stderr
 
 
 def test_posteriors_bracket_the_disc():

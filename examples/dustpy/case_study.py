@@ -1,0 +1,305 @@
+"""A disc with grain physics: one DustPy disc run four ways, V_frag by hand against V_frag from
+the laboratory data through the viscoelastic model (Arakawa & Krijt 2021, Sections 5-7).
+
+The runs (everything else is DustPy's default disc, see DISC below):
+
+- ``constant``: V_frag = 10 m/s everywhere, the common choice of dust-evolution models;
+- ``median``: V_frag from grain physics (``stickiness.dustpy.set_vfrag``): 0.1 um monomers,
+  bare refractory grains inside the H2O snow line (V_frag = ``--v-frag-refractory``, the model
+  has no T_vis for them), H2O ice between the snow lines and CO2 ice outside, with T_vis from
+  the posteriors of the laboratory data (``st.infer``, the data of ``infer_ice.py``), the
+  posterior median of V_frag = 10 V_stick;
+- ``q16``, ``q84``: the same with the 16 % and 84 % posterior quantiles: the data's
+  uncertainty carried to the disc.
+
+Writes two figures (the dust surface density over radius and particle size, side by side for
+the runs, with DustPy's drift and fragmentation limits and the snow lines; the size carrying
+most mass, its Stokes number, the dust-to-gas ratio and V_frag against r with the posterior
+band) and an .npz of the final states, and prints the numbers the documentation quotes.
+
+    python examples/dustpy/case_study.py [--years 1e5] [--out-dir docs/figures]
+    python examples/dustpy/case_study.py --replot     # the figures from the saved .npz
+
+Needs DustPy (``pip install dustpy``, which needs gfortran), emcee and matplotlib. DustPy
+works in cgs: V_frag enters it in cm/s (``stickiness.dustpy`` converts). The cost on 2 cores
+is in docs/performance.md ("DustPy case study").
+"""
+
+import argparse
+import concurrent.futures as cf
+import math
+import multiprocessing
+import time
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+import stickiness as st
+from stickiness import dustpy as sd
+
+#: Monomer radius (m): 0.1 um, the monomers of Arakawa & Krijt (2021, Section 6).
+MONOMER_RADIUS = 1e-7
+#: V_frag (m/s) of the constant run: the common choice of dust-evolution models.
+CONSTANT_V_FRAG = 10.0
+#: V_frag (m/s) of bare refractory (silicate) aggregates inside the H2O snow line: the model
+#: has no T_vis for them, so it is an input; 1 m/s is the laboratory value for silicate
+#: aggregates (Blum & Wurm 2008) and stickiness.dustpy's default.
+V_FRAG_REFRACTORY = 1.0
+#: The runs: name -> posterior quantile of V_frag (None: the constant V_frag).
+RUNS = {"constant": None, "q16": 0.16, "median": 0.5, "q84": 0.84}
+#: DustPy's default disc (Simulation() as it comes: 1 M_sun star, 0.05 M_sun of gas with
+#: Sigma ~ r^-1 exp(-r/60 au), alpha = 1e-3, dust-to-gas 0.01, passive irradiated temperature,
+#: 100 radial cells from 1 to 1000 au, 7 mass bins a decade) except the mass grid's top, raised
+#: from 1e5 g so that nothing piles up at its end: H2O aggregates that do not fragment grow
+#: through St = 1 just outside the H2O snow line and reach 100 m within 1e4 yr. Measured with
+#: 50 radial cells: with 1e12 g (50 m) 4.6e-3 of the dust sat in the grid's top decade at 1e4 yr;
+#: with 1e15 g (500 m) 2.5e-15.
+MMAX = 1e15  # g
+
+
+def posteriors(steps: int, seed: int) -> dict:
+    """T_vis posteriors of CO2 and H2O from the laboratory data (as in infer_ice.py)."""
+    # CO2: Musiolik et al. (2016a), grains on a CO2-covered target, 80 % within 40-120 um
+    width = math.log(120 / 40) / (2 * 1.2816)  # the lognormal's 10-90 % range
+    sizes = st.SizeDistribution.lognormal(median=math.sqrt(40e-6 * 120e-6), width=width)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", st.StickinessWarning)
+        co2 = st.infer("co2", sizes, wall=True, v_stick=(0.04, 0.02), steps=steps, seed=seed)
+        # H2O: Gundlach & Blum (2015), 1.5 um, gamma_SV free over the literature's spread
+        h2o = st.infer("h2o", 1.5e-6, v_stick=(9.6, 0.3), free=("t_vis", "gamma_sv"),
+                       priors={"gamma_sv": (0.02, 0.19)}, steps=3 * steps, seed=seed)
+    return {"co2": co2, "h2o": h2o}
+
+
+def run(name: str, quantile, post: dict, args) -> dict:
+    """One DustPy run to ``args.years``; returns its final state (cgs, as DustPy keeps it)."""
+    from dustpy import Simulation
+    from dustpy import constants as c
+    from dustpy.utils import read_data
+
+    start = time.perf_counter()
+    sim = Simulation()
+    sim.ini.grid.Nr = args.nr
+    sim.ini.grid.mmax = args.mmax
+    sim.ini.dust.vFrag = CONSTANT_V_FRAG * sd.CM_PER_M  # cm/s
+    sim.initialize()
+    if quantile is not None:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", st.StickinessWarning)
+            sd.set_vfrag(sim, MONOMER_RADIUS, v_frag_refractory=args.v_frag_refractory,
+                         posteriors=post, quantile=quantile)
+    sim.writer = None
+    sim.verbosity = 0
+    # run from milestone to milestone (a decade's half steps) to report progress and cost
+    for years in milestones(args.years):
+        sim.t.snapshots = np.array([years]) * c.year
+        sim.run()
+        print(f"  {name}: {years:.3g} yr after {time.perf_counter() - start:.0f} s", flush=True)
+    data = read_data(sim)
+    state = {
+        "r": data.grid.r[0] / c.au,  # au
+        "m": data.grid.m[0],  # g
+        "a": sim.dust.a,  # cm, (r, m)
+        "sigma": data.dust.sigma[0],  # g/cm^2 per unit ln m, (r, m)
+        "Sigma_dust": sim.dust.Sigma,  # g/cm^2 per bin, (r, m)
+        "St": data.dust.St[0],
+        "St_drift": data.dust.St_limits.drift[0],
+        "St_frag": data.dust.St_limits.frag[0],
+        "Sigma_gas": data.gas.Sigma[0],  # g/cm^2
+        "T": sim.gas.T,  # K
+        "v_frag": data.dust.v.frag[0] / sd.CM_PER_M,  # m/s
+    }
+    # plain arrays (DustPy's fields carry their updaters, which do not pickle)
+    state = {k: np.array(v, dtype=float) for k, v in state.items()}
+    state.update(name=name, years=float(sim.t) / c.year, seconds=time.perf_counter() - start)
+    return state
+
+
+def milestones(years: float) -> list:
+    """The times (yr) a run reports at: 1e3, 3e3, 1e4, ... below ``years``, then ``years``."""
+    marks = [m * 10.0**e for e in range(3, 12) for m in (1.0, 3.0)]
+    return [m for m in marks if m < years] + [years]
+
+
+#: Below this dust-to-gas ratio a cell holds only DustPy's floor values (the outer disc, emptied
+#: by drift): its "size carrying most mass" means nothing and is not drawn or reported.
+EMPTY_D2G = 1e-5
+
+
+def peak(state: dict) -> dict:
+    """Per radius: the size carrying most mass (m), its Stokes number, the dust-to-gas ratio."""
+    S = state["Sigma_dust"]
+    i = S.argmax(axis=1)
+    rows = np.arange(S.shape[0])
+    d2g = S.sum(axis=1) / state["Sigma_gas"]
+    empty = d2g < EMPTY_D2G
+    return {"a": np.where(empty, np.nan, state["a"][rows, i] * 1e-2),
+            "St": np.where(empty, np.nan, state["St"][rows, i]), "d2g": d2g}
+
+
+def snow_lines(state: dict) -> dict:
+    """Radius (au) where the gas temperature crosses each snow line (T falls outwards)."""
+    r, T = state["r"], state["T"]
+    return {name: float(np.interp(-t, -T, r)) for name, t in
+            (("H2O", sd.T_H2O), ("CO2", sd.T_CO2))}
+
+
+def draw(states: dict, out_dir: Path, years: float) -> list:
+    """The two figures; returns their paths."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    titles = {"constant": f"constant V_frag = {CONSTANT_V_FRAG:g} m/s",
+              "q16": "grain physics, 16 % quantile", "median": "grain physics, median",
+              "q84": "grain physics, 84 % quantile"}
+    names = [n for n in RUNS if n in states]
+    top = max(np.nanmax(s["sigma"]) for s in states.values())
+    levels = np.arange(np.ceil(np.log10(top)) - 6, np.ceil(np.log10(top)) + 0.01, 0.5)
+    fig, axes = plt.subplots(1, len(names), figsize=(4.1 * len(names), 4.0), sharey=True,
+                             squeeze=False)
+    for ax, name in zip(axes[0], names):
+        s = states[name]
+        r2 = np.broadcast_to(s["r"][:, None], s["a"].shape)
+        size = s["a"] * 1e-2  # m
+        img = ax.contourf(r2, size, np.log10(np.maximum(s["sigma"], 1e-300)), levels=levels,
+                          cmap="magma", extend="both")
+        limits = (("St_drift", "C2", "drift limit"), ("St_frag", "C0", "fragmentation limit"))
+        for key, colour, _ in limits:
+            lim = np.where(np.isfinite(s[key]), s[key], np.inf)  # NaN: no fragmentation limit
+            ax.contour(r2, size, s["St"] - lim[:, None], levels=[0.0], colors=colour,
+                       linewidths=1.2)
+        ax.contour(r2, size, s["St"], levels=[1.0], colors="white", linewidths=0.8,
+                   linestyles="--")
+        for line, r_line in snow_lines(s).items():
+            ax.axvline(r_line, color="0.8", ls=":", lw=1)
+            ax.text(r_line, 1.01, line, transform=ax.get_xaxis_transform(), ha="center",
+                    fontsize=8)
+        ax.set(xscale="log", yscale="log", xlim=(s["r"][0], s["r"][-2]),
+               ylim=(1e-5, size.max()), xlabel="r (au)")
+        ax.set_title(titles[name], fontsize=9, pad=14)
+    axes[0][0].set_ylabel("particle radius a (m)")
+    for colour, label in (("C2", "drift limit"), ("C0", "fragmentation limit"),
+                          ("white", "St = 1")):
+        axes[0][0].plot([], [], color=colour, label=label)
+    axes[0][0].legend(fontsize=7, loc="upper right", facecolor="0.3", labelcolor="white")
+    bar = fig.colorbar(img, ax=axes[0].tolist(), pad=0.01)
+    bar.set_label(r"$\log_{10}\,\sigma_{\rm d}$ (g/cm$^2$ per unit ln m)")
+    fig.suptitle(f"DustPy's default disc after {years:.3g} yr: the dust over radius and size",
+                 fontsize=11, y=1.04)
+    maps = out_dir / "dustpy_case_study.png"
+    fig.savefig(maps, dpi=110, bbox_inches="tight")
+    plt.close(fig)
+
+    fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
+    panels = (("v_frag", "V_frag (m/s)"), ("a", "size carrying most mass (m)"),
+              ("St", "its Stokes number"), ("d2g", "dust-to-gas ratio"))
+    for ax, (key, label) in zip(axes.flat, panels):
+        series = {n: (states[n]["v_frag"] if key == "v_frag" else peak(states[n])[key])
+                  for n in names}
+        r = states[names[0]]["r"][:-1]  # the outermost cell is DustPy's boundary
+        if "constant" in series:
+            ax.plot(r, series["constant"][:-1], color="0.4", label=titles["constant"])
+        if "q16" in series and "q84" in series:
+            lo = np.minimum(series["q16"], series["q84"])[:-1]
+            hi = np.maximum(series["q16"], series["q84"])[:-1]
+            ax.fill_between(r, lo, hi, color="C3", alpha=0.3, lw=0,
+                            label="grain physics, 16-84 % posterior")
+        if "median" in series:
+            ax.plot(r, series["median"][:-1], color="C3", label=titles["median"])
+        for line, r_line in snow_lines(states[names[0]]).items():
+            ax.axvline(r_line, color="0.6", ls=":", lw=1)
+        ax.set(xscale="log", yscale="log", ylabel=label)
+    axes[1][1].set_ylim(bottom=EMPTY_D2G)
+    axes[0][0].legend(fontsize=8)
+    for ax in axes[1]:
+        ax.set_xlabel("r (au)")
+    fig.suptitle(f"After {years:.3g} yr (dotted: the H2O and CO2 snow lines)", fontsize=11)
+    fig.tight_layout()
+    profiles = out_dir / "dustpy_case_study_profiles.png"
+    fig.savefig(profiles, dpi=110)
+    plt.close(fig)
+    return [maps, profiles]
+
+
+def report(states: dict) -> None:
+    """The numbers the documentation quotes, read off the runs."""
+    for name in RUNS:
+        if name not in states:
+            continue
+        s = states[name]
+        p = peak(s)
+        lines = snow_lines(s)
+        zones = {"refractory": s["r"] < lines["H2O"],
+                 "H2O": (s["r"] >= lines["H2O"]) & (s["r"] < lines["CO2"]),
+                 "CO2 (to 100 au)": (s["r"] >= lines["CO2"]) & (s["r"] < 100)}
+        dust = np.pi * np.diff(s["r"] ** 2)  # annulus areas up to a constant (au^2)
+        text = []
+        for zone, where in zones.items():
+            where = where[:-1] & np.isfinite(p["a"][:-1])
+            if not where.any():
+                continue
+            vf = s["v_frag"][:-1][where]
+            text.append(f"{zone}: V_frag {vf.min():.3g}-{vf.max():.3g} m/s, a_peak "
+                        f"{p['a'][:-1][where].min():.2g}-{p['a'][:-1][where].max():.2g} m, St "
+                        f"{p['St'][:-1][where].min():.2g}-{p['St'][:-1][where].max():.2g}")
+        mass = (s["Sigma_dust"].sum(axis=1)[:-1] * dust).sum()
+        gas = (s["Sigma_gas"][:-1] * dust).sum()
+        top = s["Sigma_dust"][:, -7:].sum() / s["Sigma_dust"].sum()
+        print(f"{name} ({s['years']:.3g} yr, {s['seconds']:.0f} s): snow lines H2O "
+              f"{lines['H2O']:.2f} au, CO2 {lines['CO2']:.2f} au; dust/gas in the disc "
+              f"{mass / gas:.2e}; mass in the top decade of the grid {top:.1e}")
+        for t in text:
+            print("    " + t)
+
+
+def main() -> None:
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--years", type=float, default=1e5, help="length of each run (yr)")
+    p.add_argument("--nr", type=int, default=100, help="radial cells (DustPy's default 100)")
+    p.add_argument("--mmax", type=float, default=MMAX, help="top of the mass grid (g)")
+    p.add_argument("--v-frag-refractory", type=float, default=V_FRAG_REFRACTORY,
+                   help="V_frag of bare refractory grains inside the H2O snow line (m/s)")
+    p.add_argument("--steps", type=int, default=2000, help="MCMC steps a walker (st.infer)")
+    p.add_argument("--seed", type=int, default=1)
+    p.add_argument("--processes", type=int, default=2, help="runs at once")
+    p.add_argument("--out-dir", default="docs/figures", help="where the figures go")
+    p.add_argument("--data", default="target/dustpy_case_study.npz",
+                   help="the runs' final states (written; read with --replot)")
+    p.add_argument("--replot", action="store_true", help="draw from --data, run nothing")
+    args = p.parse_args()
+    out_dir = Path(args.out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    if args.replot:
+        saved = np.load(args.data, allow_pickle=True)
+        states = {k: saved[k].item() for k in saved.files}
+    else:
+        start = time.perf_counter()
+        post = posteriors(args.steps, args.seed)
+        for ice, q in post.items():
+            band = q.v_frag(MONOMER_RADIUS, quantiles=(0.16, 0.5, 0.84))
+            print(f"{ice}: V_frag (m/s) of 0.1 um monomers, 16/50/84 %: "
+                  + ", ".join(f"{v:.3g}" for v in band.to_numpy().ravel()))
+        print(f"posteriors: {time.perf_counter() - start:.1f} s")
+        # spawn: fresh workers (fork after the core's threads have started is unsafe)
+        ctx = multiprocessing.get_context("spawn")
+        Path(args.data).parent.mkdir(parents=True, exist_ok=True)
+        states = {}
+        with cf.ProcessPoolExecutor(args.processes, mp_context=ctx) as pool:
+            jobs = [pool.submit(run, n, q, post, args) for n, q in RUNS.items()]
+            for job in cf.as_completed(jobs):
+                state = job.result()
+                states[state["name"]] = state
+                # saved as each run ends: the finished runs survive an interrupted batch
+                np.savez(args.data, **{n: np.array(s, dtype=object) for n, s in states.items()})
+        print(f"all runs: {time.perf_counter() - start:.0f} s on {args.processes} processes")
+    report(states)
+    years = min(s["years"] for s in states.values())
+    for path in draw(states, out_dir, years):
+        print(f"wrote {path}")
+
+
+if __name__ == "__main__":
+    main()
