@@ -19,6 +19,7 @@ band) and an .npz of the final states, and prints the numbers the documentation 
 
     python examples/dustpy/case_study.py [--years 1e5] [--out-dir docs/figures]
     python examples/dustpy/case_study.py --replot     # the figures from the saved .npz
+    python examples/dustpy/case_study.py --resume     # go on from the runs' last checkpoints
 
 Needs DustPy (``pip install dustpy``, which needs gfortran), emcee and matplotlib. DustPy
 works in cgs: V_frag enters it in cm/s (``stickiness.dustpy`` converts). The cost on 2 cores
@@ -91,11 +92,20 @@ def run(name: str, quantile, post: dict, args) -> dict:
                          posteriors=post, quantile=quantile)
     sim.writer = None
     sim.verbosity = 0
-    # run from milestone to milestone (a decade's half steps) to report progress and cost
+    settings = {"nr": args.nr, "mmax": args.mmax, "v_frag_refractory": args.v_frag_refractory,
+                "quantile": -1.0 if quantile is None else quantile, "steps": args.steps,
+                "seed": args.seed}
+    checkpoint = Path(args.checkpoints) / f"{name}.npz"
+    spent = resume(sim, checkpoint, settings) if args.resume else 0.0
+    # run from milestone to milestone, reporting progress and cost, saving a checkpoint at each
     for years in milestones(args.years):
+        if float(sim.t) >= years * c.year * (1 - 1e-12):
+            continue
         sim.t.snapshots = np.array([years]) * c.year
         sim.run()
-        print(f"  {name}: {years:.3g} yr after {time.perf_counter() - start:.0f} s", flush=True)
+        seconds = spent + time.perf_counter() - start
+        save_checkpoint(sim, checkpoint, settings, seconds)
+        print(f"  {name}: {years:.3g} yr after {seconds:.0f} s", flush=True)
     data = read_data(sim)
     state = {
         "r": data.grid.r[0] / c.au,  # au
@@ -112,13 +122,47 @@ def run(name: str, quantile, post: dict, args) -> dict:
     }
     # plain arrays (DustPy's fields carry their updaters, which do not pickle)
     state = {k: np.array(v, dtype=float) for k, v in state.items()}
-    state.update(name=name, years=float(sim.t) / c.year, seconds=time.perf_counter() - start)
+    state.update(name=name, years=float(sim.t) / c.year,
+                 seconds=spent + time.perf_counter() - start)
     return state
 
 
+def save_checkpoint(sim, path: Path, settings: dict, seconds: float) -> None:
+    """What a DustPy run needs to go on (time, dust and gas surface densities; everything else
+    follows from them) with the settings that made it, written atomically."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    partial = path.with_suffix(".partial.npz")
+    np.savez(partial, t=float(sim.t), Sigma_dust=np.array(sim.dust.Sigma),
+             Sigma_gas=np.array(sim.gas.Sigma), seconds=seconds, **settings)
+    partial.replace(path)
+
+
+def resume(sim, path: Path, settings: dict) -> float:
+    """Puts a run's checkpoint into ``sim`` (initialised with the same settings); returns the
+    wall time (s) spent on it so far, 0 without a checkpoint."""
+    if not path.exists():
+        return 0.0
+    saved = np.load(path)
+    for key, value in settings.items():
+        if not np.isclose(float(saved[key]), float(value), rtol=1e-12):
+            raise SystemExit(f"{path}: made with {key} = {float(saved[key]):g}, not {value:g}; "
+                             "give the same settings or another --checkpoints directory")
+    sim.t[...] = float(saved["t"])
+    sim.dust.Sigma[...] = saved["Sigma_dust"]
+    sim.gas.Sigma[...] = saved["Sigma_gas"]
+    sim.update()
+    return float(saved["seconds"])
+
+
+#: Checkpoint spacing (yr) after the first 1e4 years: about 20 minutes of a grain-physics run
+#: at 50 radial cells (time steps of 3 yr, 0.35 s each), what a kill can cost.
+CHECKPOINT_YEARS = 1e4
+
+
 def milestones(years: float) -> list:
-    """The times (yr) a run reports at: 1e3, 3e3, 1e4, ... below ``years``, then ``years``."""
-    marks = [m * 10.0**e for e in range(3, 12) for m in (1.0, 3.0)]
+    """The times (yr) a run reports and saves a checkpoint at: 1e3, 2e3, 5e3, then every
+    CHECKPOINT_YEARS below ``years``, then ``years``."""
+    marks = [1e3, 2e3, 5e3] + [CHECKPOINT_YEARS * i for i in range(1, int(years / 1e4) + 1)]
     return [m for m in marks if m < years] + [years]
 
 
@@ -269,6 +313,11 @@ def main() -> None:
     p.add_argument("--data", default="target/dustpy_case_study.npz",
                    help="the runs' final states (written; read with --replot)")
     p.add_argument("--replot", action="store_true", help="draw from --data, run nothing")
+    p.add_argument("--checkpoints", default="target/dustpy_case_study",
+                   help="where each run's state is saved at every milestone (one .npz a run)")
+    p.add_argument("--resume", action="store_true",
+                   help="go on from the checkpoints (same settings) instead of from t = 0: a "
+                        "long run over several sittings")
     args = p.parse_args()
     out_dir = Path(args.out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)

@@ -92,13 +92,24 @@ def test_a_short_run_stays_finite():
 def test_case_study_runs(tmp_path, root):
     # the smoke test of examples/dustpy/case_study.py: a tiny grid, a few years, short chains
     data = tmp_path / "runs.npz"
-    done = subprocess.run(
-        [sys.executable, str(root / "examples" / "dustpy" / "case_study.py"), "--years", "10",
-         "--nr", "12", "--mmax", "1e3", "--steps", "60", "--processes", "2", "--out-dir",
-         str(tmp_path), "--data", str(data)],
-        capture_output=True, text=True, cwd=tmp_path, timeout=900,
-    )
+    script = [sys.executable, str(root / "examples" / "dustpy" / "case_study.py")]
+    tiny = ["--nr", "12", "--mmax", "1e3", "--steps", "60", "--processes", "2", "--out-dir",
+            str(tmp_path), "--data", str(data), "--checkpoints", str(tmp_path / "runs")]
+    done = subprocess.run(script + ["--years", "10"] + tiny, capture_output=True, text=True,
+                          cwd=tmp_path, timeout=900)
     assert done.returncode == 0, done.stderr
+    # a run goes on from its checkpoint (10 yr) instead of starting again
+    more = subprocess.run(script + ["--years", "20", "--resume"] + tiny, capture_output=True,
+                          text=True, cwd=tmp_path, timeout=900)
+    assert more.returncode == 0, more.stderr
+    assert "constant: 20 yr after" in more.stdout and ": 10 yr after" not in more.stdout
+    year = 365.25 * 86400.0
+    for name in ("constant", "q16", "median", "q84"):
+        assert float(np.load(tmp_path / "runs" / f"{name}.npz")["t"]) / year == pytest.approx(20)
+    # ... and refuses a checkpoint made with other settings, naming the setting
+    other = subprocess.run(script + ["--years", "30", "--resume"] + tiny + ["--nr", "13"],
+                           capture_output=True, text=True, cwd=tmp_path, timeout=900)
+    assert other.returncode != 0 and "made with nr = 12" in other.stderr
     for figure in ("dustpy_case_study.png", "dustpy_case_study_profiles.png"):
         assert (tmp_path / figure).stat().st_size > 10_000
     # the constant run has V_frag = 10 m/s everywhere; the physics runs the refractory value
