@@ -1,7 +1,7 @@
 """A disc with grain physics: one DustPy disc run four ways, V_frag by hand against V_frag from
 the laboratory data through the viscoelastic model (Arakawa & Krijt 2021, Sections 5-7).
 
-The runs (everything else is DustPy's default disc, see DISC below):
+The runs (everything else is DustPy's default disc, see MMAX below):
 
 - ``constant``: V_frag = 10 m/s everywhere, the common choice of dust-evolution models;
 - ``median``: V_frag from grain physics (``stickiness.dustpy.set_vfrag``): 0.1 um monomers,
@@ -162,7 +162,7 @@ CHECKPOINT_YEARS = 1e4
 def milestones(years: float) -> list:
     """The times (yr) a run reports and saves a checkpoint at: 1e3, 2e3, 5e3, then every
     CHECKPOINT_YEARS below ``years``, then ``years``."""
-    marks = [1e3, 2e3, 5e3] + [CHECKPOINT_YEARS * i for i in range(1, int(years / 1e4) + 1)]
+    marks = [1e3, 2e3, 5e3] + [CHECKPOINT_YEARS * i for i in range(1, int(years / CHECKPOINT_YEARS) + 1)]
     return [m for m in marks if m < years] + [years]
 
 
@@ -291,7 +291,7 @@ def report(states: dict) -> None:
                         f"{p['St'][:-1][where].min():.2g}-{p['St'][:-1][where].max():.2g}")
         mass = (s["Sigma_dust"].sum(axis=1)[:-1] * dust).sum()
         gas = (s["Sigma_gas"][:-1] * dust).sum()
-        top = s["Sigma_dust"][:, -7:].sum() / s["Sigma_dust"].sum()
+        top = s["Sigma_dust"][:, s["m"] > s["m"][-1] / 10].sum() / s["Sigma_dust"].sum()
         print(f"{name} ({s['years']:.3g} yr, {s['seconds']:.0f} s): snow lines H2O "
               f"{lines['H2O']:.2f} au, CO2 {lines['CO2']:.2f} au; dust/gas in the disc "
               f"{mass / gas:.2e}; mass in the top decade of the grid {top:.1e}")
