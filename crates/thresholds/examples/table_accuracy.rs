@@ -50,13 +50,37 @@ fn main() {
         // coverage of the whole domain, without searching what the tables decline
         let tables = MasterTables::standard();
         let start = Instant::now();
+        // what the tables decline, by where it lies: k outside the tables, below their lowest
+        // row (y < Y_LOW), next to the kink of the end curves (where the cliff changes regime),
+        // or by the distance to the cliff x_s (bins of one decade in x = log10 c_D)
+        const Y_LOW: f64 = -4.5;
+        let mut declined = std::collections::BTreeMap::<String, usize>::new();
         let covered = points
             .iter()
             .filter(|p| {
                 let d = p.contact.dimensionless(p.t_vis);
                 let jkr = p.contact.v_stick_jkr();
                 let f_max = SearchOptions::default().v_max_for(jkr) / jkr;
-                tables.ratios(d.c_d, d.c_a, p.k, f_max).is_some()
+                let answered = tables.ratios(d.c_d, d.c_a, p.k, f_max).is_some();
+                if !answered {
+                    let (x, y) = (d.c_d.log10(), (d.c_d * d.c_a).log10());
+                    let end = tables.ends().and_then(|e| e.at(y, p.k));
+                    let ks = tables.table_k();
+                    let outside = p.k < ks[0] || p.k > ks[ks.len() - 1];
+                    let key = match end {
+                        _ if outside => "k outside the tables".to_string(),
+                        _ if y < Y_LOW => format!("y < {Y_LOW}"),
+                        Some(e) => format!(
+                            "{} the cliff, |x - x_s| in [1e{1:.0}, 1e{2:.0})",
+                            if x < e.x_s { "below" } else { "beyond" },
+                            (e.x_s - x).abs().log10().floor(),
+                            (e.x_s - x).abs().log10().floor() + 1.0
+                        ),
+                        None => "no end curve (next to the kink of the cliff)".to_string(),
+                    };
+                    *declined.entry(key).or_default() += 1;
+                }
+                answered
             })
             .count();
         println!(
@@ -66,6 +90,9 @@ fn main() {
             tables.table_k(),
             tables.k_checked()
         );
+        for (key, count) in &declined {
+            println!("  declined, {key}: {count}");
+        }
         return;
     }
     let laws: Vec<CrackLaw> = points.iter().map(|p| CrackLaw::new(p.k).unwrap()).collect();

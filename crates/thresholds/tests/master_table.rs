@@ -37,10 +37,11 @@ fn assert_agree(t: &StickingThresholds, s: &StickingThresholds, what: &str) {
 
 /// 80 points of the domain of the "Instant everywhere" issue: gamma_SV 0.01-0.3 J/m^2,
 /// E 0.5-200 GPa, nu 0.1-0.45, density 500-5000 kg/m^3, reduced radius 5 nm - 1 cm, two
-/// identical spheres or a wall, k over the tables' range (log-uniform, `Rng::answered_k`), T_vis 1e-16 - 1e-3 s. Where the
-/// tables answer they agree with the search. They answer at least 85 % of the points (measured on
-/// 2e4 points with `examples/table_accuracy.rs`: 99.8 % at the tables' own k, 95.6 % for k between
-/// the committed tables (0.0063-0.0252), where the k checks decline y below -4 and part of the cliff band).
+/// identical spheres or a wall, k over the tables' range (log-uniform 0.005-0.0504,
+/// `Rng::answered_k`), T_vis 1e-16 - 1e-3 s. Where the tables answer they agree with the search.
+/// They answer at least 90 % of the points (measured on 2e4 points with
+/// `examples/table_accuracy.rs`: 97.7 %; between tables they decline y below -4, next to the
+/// kink of the cliff, and for k above 0.0126 part of the cliff band up to y = -3.25).
 #[test]
 fn random_points_agree_with_the_search() {
     let mut rng = Rng(2027);
@@ -62,7 +63,7 @@ fn random_points_agree_with_the_search() {
         compared += 1;
     }
     assert!(
-        answered * 100 >= 85 * n,
+        answered * 100 >= 90 * n,
         "the tables answered {answered} of {n}"
     );
     assert!(compared >= n / 2, "only {compared} compared");

@@ -4,8 +4,9 @@
 //! For a query (x, y, k) and the search limit f_max = v_max / V_stick,JKR:
 //! 1. the end curves give x_s and x_on at (y, k) ([`super::ends`]);
 //! 2. F: for x >= x_s it exceeds [`F_TOP`]; else each table of the k stencil (the table of k
-//!    itself, or the four around it in ln k) gives g = ln(F - 1) at (y, u = ln(x_s - x)) where
-//!    vouched, and the cubic in ln k combines them; closer to x_s than vouched, F is at least its
+//!    itself, or the [`K_STENCIL`] around it in ln k) gives g = ln(F - 1) at (y, u = ln(x_s - x))
+//!    where vouched, and the polynomial in ln k through them combines them (quintic); closer to
+//!    x_s than vouched, F is at least its
 //!    value at the closest vouched distance (the rows' ratios increase towards the end);
 //! 3. F_on likewise, on the strip (w = ln(x_on - x)) for x within half a strip of x_s, on the
 //!    body elsewhere;
@@ -15,7 +16,7 @@
 
 use super::binary::Table;
 use super::format::F_TOP;
-use super::interp::{lagrange, stencil_start};
+use super::interp::lagrange;
 use super::table::Curve;
 use super::MasterTables;
 
@@ -26,6 +27,13 @@ pub const V_MAX_MARGIN: f64 = 1e-4;
 /// Two k closer than this (relative) are the same k: a query at a table's own k uses that table
 /// alone.
 const SAME_K: f64 = 1e-12;
+
+/// How many tables of neighbouring k answer a k between tables: six, the quintic in ln k
+/// through them. Measured at the middle of the k intervals (tables 2^(1/3) apart in k): the cubic
+/// through four misses F by up to 1e-5 at a fixed distance to the cliff for y = log10(c_D c_a)
+/// from -4 to -1.5 (so the k checks, to 2e-6, refused it there), the quintic by at most 1.2e-6.
+/// Fewer committed tables (at least four) give a lower degree.
+pub const K_STENCIL: usize = 6;
 
 /// What the tables say of one ratio.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -63,8 +71,9 @@ fn side(e: Eval, f_max: f64) -> Side {
     }
 }
 
-/// The tables that answer at k: one (k is a table's own) or four around k in ln k, with the
-/// interval of k between two tables (for the k checks). Fixed arrays: no allocation per answer.
+/// The tables that answer at k: one (k is a table's own) or [`K_STENCIL`] around k in ln k, with
+/// the interval of k between two tables (for the k checks) and the Lagrange weights of k. Fixed
+/// arrays: no allocation per answer.
 /// A plain pair kept: `((y, x), [g F, g F_on])`.
 type PlainPair = ((f64, f64), Option<[f64; 2]>);
 
@@ -72,11 +81,11 @@ struct KStencil<'a> {
     /// The last plain pair asked for: F and F_on are asked at the same point, and one search
     /// along each row serves both.
     plain: std::cell::Cell<Option<PlainPair>>,
-    tables: [&'a Table; 4],
-    /// How many of `tables` (and `ln_k`) are used: 1 or 4.
+    tables: [&'a Table; K_STENCIL],
+    /// How many of `tables` (and `weights`) are used: 1, or 4 to [`K_STENCIL`].
     n: usize,
-    /// ln k of the tables.
-    ln_k: [f64; 4],
+    /// The Lagrange weights of the tables at the asked k (the polynomial in ln k).
+    weights: [f64; K_STENCIL],
     /// The k interval (between tables i and i + 1), `None` at a table's own k.
     interval: Option<usize>,
 }
@@ -86,44 +95,32 @@ impl KStencil<'_> {
         &self.tables[..self.n]
     }
 
-    /// The values of the stencil's tables (`None` if any is missing) combined at `ln_k`.
-    fn combine(&self, ln_k: f64, mut g: impl FnMut(&Table) -> Option<f64>) -> Option<f64> {
-        let mut v = [0.0; 4];
-        for (q, t) in self.tables().iter().enumerate() {
-            v[q] = g(t)?;
+    /// The values of the stencil's tables (`None` if any is missing) combined at the asked k.
+    fn combine(&self, mut g: impl FnMut(&Table) -> Option<f64>) -> Option<f64> {
+        let mut sum = 0.0;
+        for (t, w) in self.tables().iter().zip(&self.weights) {
+            sum += w * g(t)?;
         }
-        Some(if self.n == 1 {
-            v[0]
-        } else {
-            lagrange(&self.ln_k, &v, ln_k)
-        })
+        Some(sum)
     }
 
-    /// `[g F, g F_on]` in plain x at (x, y), combined at `ln_k` (kept for the next call).
-    fn plain_both(&self, ln_k: f64, y: f64, x: f64) -> Option<[f64; 2]> {
+    /// `[g F, g F_on]` in plain x at (x, y), combined at the asked k (kept for the next call).
+    fn plain_both(&self, y: f64, x: f64) -> Option<[f64; 2]> {
         if let Some((at, g)) = self.plain.get() {
             if at == (y, x) {
                 return g;
             }
         }
-        let mut v = [[0.0; 4]; 2];
-        let mut ok = true;
-        for (q, t) in self.tables().iter().enumerate() {
-            match t.g_plain_both(y, x) {
-                Some([a, b]) => (v[0][q], v[1][q]) = (a, b),
-                None => ok = false,
+        let mut g = Some([0.0; 2]);
+        for (t, w) in self.tables().iter().zip(&self.weights) {
+            match (t.g_plain_both(y, x), g.as_mut()) {
+                (Some([a, b]), Some(sum)) => {
+                    sum[0] += w * a;
+                    sum[1] += w * b;
+                }
+                _ => g = None,
             }
         }
-        let g = ok.then(|| {
-            if self.n == 1 {
-                [v[0][0], v[1][0]]
-            } else {
-                [
-                    lagrange(&self.ln_k, &v[0], ln_k),
-                    lagrange(&self.ln_k, &v[1], ln_k),
-                ]
-            }
-        });
         self.plain.set(Some(((y, x), g)));
         g
     }
@@ -134,11 +131,13 @@ impl MasterTables {
         let ks = self.table_k();
         if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
             let t = self.table(i)?;
+            let mut weights = [0.0; K_STENCIL];
+            weights[0] = 1.0;
             return Some(KStencil {
                 plain: Default::default(),
-                tables: [t; 4],
+                tables: [t; K_STENCIL],
                 n: 1,
-                ln_k: [k.ln(); 4],
+                weights,
                 interval: None,
             });
         }
@@ -147,17 +146,27 @@ impl MasterTables {
             return None;
         }
         let i = (1..n).find(|&i| ks[i] > k).map_or(n - 2, |i| i - 1);
-        let s = stencil_start(i, n);
+        // the interval i in the middle of the stencil, shifted inward at the ends
+        let width = n.min(K_STENCIL);
+        let s = (i + 1).saturating_sub(width / 2).min(n - width);
+        let first = self.table(s)?;
+        let mut tables = [first; K_STENCIL];
+        let mut ln_k = [0.0; K_STENCIL];
+        for q in 0..width {
+            tables[q] = self.table(s + q)?;
+            ln_k[q] = ks[s + q].ln();
+        }
+        let mut weights = [0.0; K_STENCIL];
+        for (q, w) in weights.iter_mut().enumerate().take(width) {
+            let mut unit = [0.0; K_STENCIL];
+            unit[q] = 1.0;
+            *w = lagrange(&ln_k[..width], &unit[..width], k.ln());
+        }
         Some(KStencil {
             plain: Default::default(),
-            tables: [
-                self.table(s)?,
-                self.table(s + 1)?,
-                self.table(s + 2)?,
-                self.table(s + 3)?,
-            ],
-            n: 4,
-            ln_k: [ks[s].ln(), ks[s + 1].ln(), ks[s + 2].ln(), ks[s + 3].ln()],
+            tables,
+            n: width,
+            weights,
             interval: Some(i),
         })
     }
@@ -166,15 +175,7 @@ impl MasterTables {
     /// the k check) vouches for it at x, else sheared at the distance to the end where they do
     /// (this needs the end at (y, k)); closer to the end than vouched, at least the value at the
     /// closest vouched point, where the rows' ratios increase towards the end.
-    fn eval(
-        &self,
-        ks: &KStencil,
-        curve: Curve,
-        x: f64,
-        y: f64,
-        end: Option<f64>,
-        ln_k: f64,
-    ) -> Eval {
+    fn eval(&self, ks: &KStencil, curve: Curve, x: f64, y: f64, end: Option<f64>) -> Eval {
         let check = match ks.interval {
             Some(i) => match self.k_check(i, y) {
                 Some(c) => Some(c),
@@ -196,7 +197,7 @@ impl MasterTables {
             .flatten();
         let g_plain = |x: f64| {
             let v = usize::from(curve != Curve::Stick);
-            ks.plain_both(ln_k, y, x).map(|g| g[v])
+            ks.plain_both(y, x).map(|g| g[v])
         };
         if let Some(hi) = plain {
             if x <= hi {
@@ -223,7 +224,7 @@ impl MasterTables {
                 }
             }
             if vouched && lo <= hi {
-                let at = |u: f64| ks.combine(ln_k, |t| t.g_at(curve, y, u));
+                let at = |u: f64| ks.combine(|t| t.g_at(curve, y, u));
                 // far from the end the body's ratios have converged (the JKR limit): its first
                 // node answers beyond it; a strip has no such side
                 let u = match curve {
@@ -254,7 +255,7 @@ impl MasterTables {
     /// checks between tables (which the build computes with it).
     pub fn g_between_tables(&self, curve: Curve, y: f64, u: f64, k: f64) -> Option<f64> {
         let ks = self.k_stencil(k)?;
-        ks.combine(k.ln(), |t| {
+        ks.combine(|t| {
             let (lo, hi) = t.vouched(curve, y)?;
             (u >= lo && u <= hi).then_some(())?;
             t.g_at(curve, y, u)
@@ -265,7 +266,7 @@ impl MasterTables {
     /// vouches for it.
     pub fn g_plain_between_tables(&self, curve: Curve, y: f64, x: f64, k: f64) -> Option<f64> {
         let ks = self.k_stencil(k)?;
-        ks.combine(k.ln(), |t| {
+        ks.combine(|t| {
             (x <= t.plain_limit(curve, y)?).then_some(())?;
             t.g_plain(curve, y, x)
         })
@@ -286,7 +287,6 @@ impl MasterTables {
         }
         let ends = self.ends().and_then(|e| e.at(y, k));
         let ks = self.k_stencil(k)?;
-        let ln_k = k.ln();
         let beyond = |end: Option<f64>| {
             // past its end a ratio exceeds F_TOP (rows checked for no bouncing beyond)
             match end {
@@ -301,14 +301,14 @@ impl MasterTables {
             }
         };
         let x_s = ends.map(|e| e.x_s);
-        let stick = beyond(x_s)
-            .unwrap_or_else(|| side(self.eval(&ks, Curve::Stick, x, y, x_s, ln_k), f_max));
+        let stick =
+            beyond(x_s).unwrap_or_else(|| side(self.eval(&ks, Curve::Stick, x, y, x_s), f_max));
         let onset = beyond(ends.map(|e| e.x_on)).unwrap_or_else(|| {
             let on_strip = ends
                 .filter(|e| x > e.x_s - 0.5 * (e.x_on - e.x_s))
-                .map(|e| self.eval(&ks, Curve::OnsetStrip, x, y, Some(e.x_on), ln_k))
+                .map(|e| self.eval(&ks, Curve::OnsetStrip, x, y, Some(e.x_on)))
                 .filter(|e| *e != Eval::Unknown);
-            let e = on_strip.unwrap_or_else(|| self.eval(&ks, Curve::OnsetBody, x, y, x_s, ln_k));
+            let e = on_strip.unwrap_or_else(|| self.eval(&ks, Curve::OnsetBody, x, y, x_s));
             side(e, f_max)
         });
         match (stick, onset) {

@@ -160,7 +160,7 @@ pub struct EndsData {
     /// The y bins of the checks between tables of neighbouring k: first y, step, count.
     pub kcheck_y: (f64, f64, usize),
     /// For the k interval between tables i and i + 1 and y bin b (index `i * count + b`): where
-    /// the cubic in ln k is vouched for.
+    /// the polynomial in ln k (through the six tables around k) is vouched for.
     pub kcheck: Vec<CellData>,
 }
 

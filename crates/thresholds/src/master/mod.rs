@@ -27,8 +27,8 @@
 //!   all as `ln(ratio - 1)` (F > 1.00015 everywhere: the T_vis -> 0 limit lies 1.5e-4 above
 //!   the rounded 14.18 of V_stick,JKR). A query interpolates at its own distance to the end
 //!   (the end curves at its (y, k)): the local cubic in u on the four rows around y, the cubic
-//!   in y, then the cubic in ln k through the four tables around k (11 tables, k = 0.005
-//!   2^(i/3)).
+//!   in y, then the quintic in ln k through the six tables around k (11 tables, k = 0.005
+//!   2^(i/3); `answer::K_STENCIL`).
 //! - **Vouching.** Every node is an exact search ([`build`]); every interval of a row, every
 //!   cell between rows and every interval between tables of neighbouring k was checked at its
 //!   midpoint, and the default search agrees with each node; the tables answer only where those
@@ -168,7 +168,7 @@ impl MasterTables {
         self.k.len() >= 4 && e.kcheck_y.2 > 0 && e.kcheck.len() == (self.k.len() - 1) * e.kcheck_y.2
     }
 
-    /// The limits of the cubic in ln k between tables `i` and `i + 1` at `y`, as a table's cell
+    /// The limits of the polynomial in ln k between tables `i` and `i + 1` at `y`, as a table's cell
     /// ([`format::CellData::limits`]); `None` where it was not checked.
     fn k_check(&self, i: usize, y: f64) -> Option<[f64; 5]> {
         let e: &EndsData = self.ends()?.data();

@@ -1,5 +1,5 @@
 //! The checks between tables of neighbouring k: in each k interval, at its middle k (a point of
-//! the end curves' grid), in each bin of y, the cubic in ln k through the four tables around it
+//! the end curves' grid), in each bin of y, the quintic in ln k through the six tables around it
 //! is compared with the exact search along the nodes of the nearest row, from far from the end
 //! towards it; the interval is vouched for in that bin down to the last distance that passed.
 
@@ -68,7 +68,7 @@ pub fn k_checks(
     Ok(out)
 }
 
-/// The limits of the cubic in ln k at `y` (as a cell's).
+/// The limits of the polynomial in ln k at `y` (as a cell's).
 fn check_bin(
     cfg: &BuildConfig,
     law: &CrackLaw,

@@ -14,7 +14,7 @@
 //! 3. **Cells** ([`cells`]): rows every 0.5 in y; each cell is checked at mid-y on the nodes of
 //!    its two rows (at the distance to the interpolated end) and a row added in its middle where
 //!    the check fails, down to 1/64.
-//! 4. **k intervals** ([`kcheck`]): between tables of neighbouring k, the cubic in ln k is
+//! 4. **k intervals** ([`kcheck`]): between tables of neighbouring k, the quintic in ln k is
 //!    checked at the middle k in every quarter of y.
 //!
 //! A node is the exact search ([`crate::sticking_thresholds`]) at a synthetic contact whose
