@@ -1,6 +1,6 @@
 //! Turns the committed master tables (`data/master_k<k>.csv`, `data/master_ends.csv`, text) into
-//! their binary form (`$OUT_DIR/master.bin`), which the library embeds: reading it at run time
-//! is copying numbers (about 1 ms for the end curves and one table), not parsing text. The
+//! their binary form (`$OUT_DIR/master.bin`), which the library embeds: at run time its arrays
+//! are borrowed in place (about 0.3 ms for the end curves and one table), not parsed. The
 //! reader and writer are the library's own (`src/master/format.rs`, `src/master/binary.rs`,
 //! `src/bytes.rs`).
 

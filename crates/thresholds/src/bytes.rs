@@ -2,8 +2,13 @@
 //! ([`crate::master::binary`]) and the restitution tables ([`crate::restitution::format`]):
 //! little-endian `f64` numbers (counts and flags as whole numbers), first a magic of 8 bytes, the
 //! number of tables and each one's k, byte offset and length, then what the tables share (the
-//! master tables' end curves), then the tables. Reading it is copying numbers. `std` only: the
-//! build script includes this file, as it includes its two users.
+//! master tables' end curves), then the tables. Every value is one `f64`, so every array lies
+//! on a multiple of 8 bytes: the library embeds the form aligned for `f64`
+//! ([`crate::master`]) and borrows its arrays in place ([`Reader::fs_borrowed`]), so a
+//! process's first answer reads only the pages it touches. `std` and `bytemuck` only: the build
+//! script includes this file, as it includes its two users.
+
+use std::borrow::Cow;
 
 /// Appends numbers to a binary form.
 #[derive(Default)]
@@ -83,16 +88,26 @@ impl<'a> Reader<'a> {
 
     /// Numbers after their length ([`Writer::fs`]).
     pub fn fs(&mut self) -> Option<Vec<f64>> {
+        self.fs_borrowed().map(Cow::into_owned)
+    }
+
+    /// Numbers after their length ([`Writer::fs`]), borrowed from the binary form where it lies
+    /// aligned for `f64` on a little-endian machine (the embedded tables), else copied.
+    pub fn fs_borrowed(&mut self) -> Option<Cow<'a, [f64]>> {
         let n = self.n()?;
         let bytes = self.bytes.get(self.at..self.at + 8 * n)?;
         self.at += 8 * n;
-        // in bulk: a process's first answer reads about 2 MB of these
-        Some(
+        if cfg!(target_endian = "little") {
+            if let Ok(v) = bytemuck::try_cast_slice::<u8, f64>(bytes) {
+                return Some(Cow::Borrowed(v));
+            }
+        }
+        Some(Cow::Owned(
             bytes
                 .chunks_exact(8)
                 .map(|b| <[u8; 8]>::try_from(b).map_or(f64::NAN, f64::from_le_bytes))
                 .collect(),
-        )
+        ))
     }
 
     /// Flags after their length ([`Writer::flags`]).

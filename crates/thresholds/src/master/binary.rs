@@ -1,20 +1,25 @@
 //! The master tables as the library interpolates them ([`Table`]: node coordinates already
 //! turned into `u = ln(end - x)` and the ratios into `g = ln(ratio - 1)`) and their binary form:
-//! every table and the end curves as little-endian `f64` arrays ([`crate::bytes`]), so that
-//! reading it is copying numbers. Made by the build script (`crates/thresholds/build.rs`, which
+//! every table and the end curves as little-endian `f64` arrays ([`crate::bytes`]), which the
+//! library borrows in place from the embedded form ([`Floats`]). Made by the build script (`crates/thresholds/build.rs`, which
 //! includes this file, [`super::format`] and [`crate::bytes`]) from the committed text, read by
 //! the library on first use; `std` only.
 
 use super::format::{CellData, EndsData, PieceData, TableData};
 use crate::bytes::{self, Reader, Writer};
+use std::borrow::Cow;
+
+/// An array of numbers: borrowed from the embedded binary form (no copy: a process's first
+/// answer reads only the pages it touches), or owned (made from the text form).
+pub type Floats = Cow<'static, [f64]>;
 
 /// A piece ready to interpolate: `u = ln(end - x)` increasing and `g = ln(ratio - 1)`.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Piece {
     /// ln(end - x) of the nodes, increasing (the nodes in decreasing x).
-    pub u: Vec<f64>,
+    pub u: Floats,
     /// `[ln(F - 1), ln(F_on - 1)]` at the nodes (the first NaN in a strip).
-    pub g: [Vec<f64>; 2],
+    pub g: [Floats; 2],
     /// `[F, F_on]`: vouched for u >= this (ln of the piece's `d_lo`).
     pub u_lo: [f64; 2],
     /// `[F, F_on]`: vouched for x <= this (`end - d_lo`; kept to spare an `exp` per answer).
@@ -24,7 +29,9 @@ pub struct Piece {
 impl Piece {
     fn from_data(p: &PieceData, end: f64) -> Piece {
         let n = p.x.len();
-        let rev = |v: &[f64], f: &dyn Fn(f64) -> f64| (0..n).map(|i| f(v[n - 1 - i])).collect();
+        let rev = |v: &[f64], f: &dyn Fn(f64) -> f64| -> Floats {
+            (0..n).map(|i| f(v[n - 1 - i])).collect::<Vec<_>>().into()
+        };
         Piece {
             u: rev(&p.x, &|x| (end - x).ln()),
             g: [
@@ -139,10 +146,10 @@ impl Piece {
         w.f(self.x_hi[1]);
     }
 
-    fn read(r: &mut Reader) -> Option<Piece> {
+    fn read(r: &mut Reader<'static>) -> Option<Piece> {
         Some(Piece {
-            u: r.fs()?,
-            g: [r.fs()?, r.fs()?],
+            u: r.fs_borrowed()?,
+            g: [r.fs_borrowed()?, r.fs_borrowed()?],
             u_lo: [r.f()?, r.f()?],
             x_hi: [r.f()?, r.f()?],
         })
@@ -165,7 +172,7 @@ pub fn to_bytes(tables: &[TableData], ends: &EndsData) -> Vec<u8> {
     e.n(ends.nk);
     e.fs(&ends.x_s);
     e.fs(&ends.x_on);
-    e.flags(&ends.valid);
+    e.fs(&ends.valid);
     e.f(ends.kcheck_y.0);
     e.f(ends.kcheck_y.1);
     e.n(ends.kcheck_y.2);
@@ -199,13 +206,13 @@ pub fn index(bytes: &[u8]) -> Option<Vec<(f64, usize, usize)>> {
 }
 
 /// The end curves from the binary form.
-pub fn ends_from_bytes(bytes: &[u8]) -> Option<EndsData> {
+pub fn ends_from_bytes(bytes: &'static [u8]) -> Option<EndsData> {
     let mut r = bytes::shared(bytes, MAGIC)?;
     let mut e = EndsData::empty();
     (e.y0, e.dy, e.ny, e.k0, e.per_octave, e.nk) = (r.f()?, r.f()?, r.n()?, r.f()?, r.n()?, r.n()?);
-    e.x_s = r.fs()?;
-    e.x_on = r.fs()?;
-    e.valid = r.flags()?;
+    e.x_s = r.fs_borrowed()?;
+    e.x_on = r.fs_borrowed()?;
+    e.valid = r.fs_borrowed()?;
     e.kcheck_y = (r.f()?, r.f()?, r.n()?);
     e.kcheck = r
         .fs()?
@@ -216,7 +223,7 @@ pub fn ends_from_bytes(bytes: &[u8]) -> Option<EndsData> {
 }
 
 /// Table `i` of the binary form.
-pub fn table_from_bytes(bytes: &[u8], i: usize) -> Option<Table> {
+pub fn table_from_bytes(bytes: &'static [u8], i: usize) -> Option<Table> {
     let mut r = bytes::table(bytes, MAGIC, i)?;
     let k = r.f()?;
     let rows = r.list(|r| {

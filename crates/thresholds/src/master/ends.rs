@@ -71,7 +71,7 @@ impl EndCurves {
         for (a, &w_k) in wk.iter().enumerate() {
             for (b, &w_y) in wy.iter().enumerate() {
                 let at = (ik + a) * d.ny + iy + b;
-                if !d.valid[at] {
+                if !d.is_valid(at) {
                     return None;
                 }
                 s += w_k * w_y * d.x_s[at];

@@ -101,7 +101,7 @@ pub fn ends_to_text(e: &EndsData) -> String {
                 "{},{},{}",
                 number(e.x_s[at]),
                 number(e.x_on[at]),
-                u8::from(e.valid[at])
+                u8::from(e.is_valid(at))
             );
         }
     }

@@ -151,12 +151,13 @@ pub struct EndsData {
     /// The number of k values.
     pub nk: usize,
     /// x_s at (k_j, y_i), index `j * ny + i` (NaN where it could not be computed).
-    pub x_s: Vec<f64>,
+    pub x_s: std::borrow::Cow<'static, [f64]>,
     /// x_on likewise.
-    pub x_on: Vec<f64>,
-    /// Whether a cubic through the point and its neighbours is trusted there (false next to
-    /// a kink of the curves, where the regime of the cliff changes).
-    pub valid: Vec<bool>,
+    pub x_on: std::borrow::Cow<'static, [f64]>,
+    /// Whether a cubic through the point and its neighbours is trusted there: 1.0, or 0.0 next
+    /// to a kink of the curves, where the regime of the cliff changes (numbers, as the binary
+    /// form holds them, so that they are borrowed in place; [`EndsData::is_valid`]).
+    pub valid: std::borrow::Cow<'static, [f64]>,
     /// The y bins of the checks between tables of neighbouring k: first y, step, count.
     pub kcheck_y: (f64, f64, usize),
     /// For the k interval between tables i and i + 1 and y bin b (index `i * count + b`): where
@@ -165,6 +166,11 @@ pub struct EndsData {
 }
 
 impl EndsData {
+    /// Whether point `at` of the grid is valid ([`EndsData::valid`]).
+    pub fn is_valid(&self, at: usize) -> bool {
+        self.valid.get(at) == Some(&1.0)
+    }
+
     /// No grid and no values yet (NaN numbers, zero counts).
     pub fn empty() -> EndsData {
         EndsData {
@@ -175,9 +181,9 @@ impl EndsData {
             k0: f64::NAN,
             per_octave: 0,
             nk: 0,
-            x_s: Vec::new(),
-            x_on: Vec::new(),
-            valid: Vec::new(),
+            x_s: Vec::new().into(),
+            x_on: Vec::new().into(),
+            valid: Vec::new().into(),
             kcheck_y: (f64::NAN, f64::NAN, 0),
             kcheck: Vec::new(),
         }
@@ -365,9 +371,9 @@ pub fn parse_ends(text: &str) -> Result<EndsData, FormatError> {
             }
             _ => {
                 let v = numbers(n, &fields, 3)?;
-                e.x_s.push(v[0]);
-                e.x_on.push(v[1]);
-                e.valid.push(v[2] == 1.0);
+                e.x_s.to_mut().push(v[0]);
+                e.x_on.to_mut().push(v[1]);
+                e.valid.to_mut().push(if v[2] == 1.0 { 1.0 } else { 0.0 });
             }
         }
     }

@@ -72,9 +72,18 @@ pub use file::{ends_to_text, table_to_text};
 pub use format::{FormatError, F_TOP};
 pub use table::Curve;
 
+/// Bytes aligned for `f64`: the embedded binary form's arrays are borrowed in place
+/// ([`binary::Floats`]) instead of copied on first use (1.2 ms for the end curves and a table,
+/// most of it the kernel's zeroing of fresh pages).
+#[repr(C, align(8))]
+struct Aligned<B: ?Sized>(B);
+
 /// The tables' binary form, made by the build script from the committed text files
-/// (`crates/thresholds/data/master_*.csv`).
-static BYTES: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/master.bin"));
+/// (`crates/thresholds/data/master_*.csv`), aligned for `f64`.
+static ALIGNED: &Aligned<[u8]> = &Aligned(*include_bytes!(concat!(env!("OUT_DIR"), "/master.bin")));
+
+/// [`ALIGNED`]'s bytes.
+static BYTES: &[u8] = &ALIGNED.0;
 
 /// The ratios to V_stick,JKR at one point: `None` for a ratio above the search limit (nothing
 /// bounces, or double-collides, below it).

@@ -190,6 +190,12 @@ pub fn repair_ends(
     let x_s: Vec<f64> = columns.iter().flat_map(|c| c.0.iter().copied()).collect();
     let x_on: Vec<f64> = columns.iter().flat_map(|c| c.1.iter().copied()).collect();
     let valid = validity(&x_s, &x_on, ny, nk);
+    let (x_s, x_on) = (x_s.into(), x_on.into());
+    let valid = valid
+        .iter()
+        .map(|&v| f64::from(u8::from(v)))
+        .collect::<Vec<_>>()
+        .into();
     EndsData {
         header: vec![
             format!(
