@@ -143,6 +143,17 @@ pub struct Contact {
     material: Material,
     geometry: Geometry,
     epsilon: f64,
+    /// The JKR units, computed once: every answer from the master tables asks for them (three
+    /// cube roots and a power, a third of a table answer when recomputed each time).
+    units: Units,
+}
+
+/// The JKR units of a contact (SI): a_eq (m), t0 (s), V_stick,JKR (m/s).
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Units {
+    a_eq: f64,
+    t0: f64,
+    v_stick_jkr: f64,
 }
 
 impl Contact {
@@ -151,19 +162,12 @@ impl Contact {
     pub fn new(material: Material, geometry: Geometry) -> Result<Self, ContactError> {
         material.validate()?;
         geometry.validate()?;
-        let contact = Self {
-            material,
-            geometry,
-            epsilon: SURFACE_FORCE_RANGE,
-        };
+        let contact = Self::with_units(material, geometry);
         // valid constants can still be too far out for f64 (a radius of 1e300 m has an
         // infinite mass): refuse them here rather than let a search run on infinities, naming
         // the radius at fault (R2 if R1 alone, as identical spheres, is fine)
         if !contact.units_finite() {
-            let alone = Self {
-                geometry: Geometry::identical(geometry.r1()),
-                ..contact
-            };
+            let alone = Self::with_units(material, Geometry::identical(geometry.r1()));
             let (name, value) = match geometry.r2() {
                 Some(r2) if alone.units_finite() => ("radius2", r2),
                 _ => ("radius", geometry.r1()),
@@ -182,6 +186,26 @@ impl Contact {
             .into());
         }
         Ok(contact)
+    }
+
+    /// The contact with its units computed (epsilon = [`SURFACE_FORCE_RANGE`]; not validated).
+    fn with_units(material: Material, geometry: Geometry) -> Self {
+        let mut c = Self {
+            material,
+            geometry,
+            epsilon: SURFACE_FORCE_RANGE,
+            units: Units {
+                a_eq: f64::NAN,
+                t0: f64::NAN,
+                v_stick_jkr: f64::NAN,
+            },
+        };
+        c.units = Units {
+            a_eq: c.compute_a_eq(),
+            t0: c.compute_t0(),
+            v_stick_jkr: c.compute_v_stick_jkr(),
+        };
+        c
     }
 
     /// Whether the reduced mass and the JKR units (a_eq, t0, V_stick,JKR) are finite and > 0.
@@ -246,6 +270,10 @@ impl Contact {
 
     /// Equilibrium contact radius a_eq = (9 pi gamma R^2 / (2 E*))^(1/3) (m) (Section 2.2).
     pub fn a_eq(&self) -> f64 {
+        self.units.a_eq
+    }
+
+    fn compute_a_eq(&self) -> f64 {
         let r = self.reduced_radius();
         (9.0 * PI * self.gamma() * r * r / (2.0 * self.e_star())).cbrt()
     }
@@ -292,6 +320,10 @@ impl Contact {
     /// JKR sticking velocity V_stick,JKR = (14.18/m*)^(1/2) (gamma^5 R^4 / E*^2)^(1/6) (m/s)
     /// (Thornton & Ning 1998; Section 5.1).
     pub fn v_stick_jkr(&self) -> f64 {
+        self.units.v_stick_jkr
+    }
+
+    fn compute_v_stick_jkr(&self) -> f64 {
         let (g, e, r) = (self.gamma(), self.e_star(), self.reduced_radius());
         (THORNTON_NING_14_18 / self.m_star()).sqrt()
             * (g.powi(5) * r.powi(4) / (e * e)).powf(1.0 / 6.0)
@@ -389,6 +421,10 @@ impl Contact {
     /// The JKR time unit `t0 = sqrt(m* delta_eq / F0)`, `F0 = 3 pi gamma R = 2 F_crit` (s): the
     /// time of the collision equations in JKR units (`docs/model.md`).
     pub fn t0(&self) -> f64 {
+        self.units.t0
+    }
+
+    fn compute_t0(&self) -> f64 {
         let f0 = 2.0 * self.f_crit();
         (self.m_star() * self.delta_eq() / f0).sqrt()
     }
