@@ -66,7 +66,7 @@ use format::EndsData;
 use std::sync::OnceLock;
 
 pub(crate) use answer::from_table;
-pub use answer::{TABLE_REL_TOL, V_MAX_MARGIN};
+pub use answer::{K_STENCIL, TABLE_REL_TOL, V_MAX_MARGIN};
 pub use ends::{EndCurves, Ends};
 pub use file::{ends_to_text, table_to_text};
 pub use format::{FormatError, F_TOP};

@@ -8,7 +8,7 @@ use super::{rel_diff, BuildConfig, Cache};
 use crate::master::binary::Table;
 use crate::master::ends::EndCurves;
 use crate::master::format::{CellData, EndsData, TableData};
-use crate::master::{Curve, MasterTables};
+use crate::master::{Curve, MasterTables, K_STENCIL};
 use crate::ThresholdsError;
 use greenwood::CrackLaw;
 use numerics::format::number;
@@ -60,8 +60,10 @@ pub fn k_checks(
         ));
         out.kcheck[i * ny..(i + 1) * ny].copy_from_slice(&bins);
     }
+    // this check's description replaces an earlier one's
+    out.header.retain(|h| !h.starts_with("k checks:"));
     out.header.push(format!(
-        "k checks: in each interval of k at its middle k, in y bins of {}, along every {CHECK_EVERY}nd node of the nearest row, to {}",
+        "k checks: the polynomial in ln k through {K_STENCIL} tables, in each interval of k at its middle k, in y bins of {}, along every {CHECK_EVERY}nd node of the nearest row, to {}",
         number(dy),
         number(cfg.tol)
     ));
