@@ -143,8 +143,8 @@ pub struct Contact {
     material: Material,
     geometry: Geometry,
     epsilon: f64,
-    /// The JKR units, computed once: every answer from the master tables asks for them (three
-    /// cube roots and a power, a third of a table answer when recomputed each time).
+    /// The JKR units, computed once: every answer from the master tables asks for them (two
+    /// cube roots and a power each time they were recomputed).
     units: Units,
 }
 

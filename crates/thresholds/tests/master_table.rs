@@ -41,7 +41,7 @@ fn assert_agree(t: &StickingThresholds, s: &StickingThresholds, what: &str) {
 /// `Rng::answered_k`), T_vis 1e-16 - 1e-3 s. Where the tables answer they agree with the search.
 /// They answer at least 90 % of the points (measured on 2e4 points with
 /// `examples/table_accuracy.rs`: 97.7 %; between tables they decline y below -4, next to the
-/// kink of the cliff, and for k above 0.0126 part of the cliff band up to y = -3.25).
+/// kink of the cliff, and for k above 0.01 part of the cliff band up to y = -3.25).
 #[test]
 fn random_points_agree_with_the_search() {
     let mut rng = Rng(2027);

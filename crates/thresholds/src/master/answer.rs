@@ -4,10 +4,10 @@
 //! For a query (x, y, k) and the search limit f_max = v_max / V_stick,JKR:
 //! 1. the end curves give x_s and x_on at (y, k) ([`super::ends`]);
 //! 2. F: for x >= x_s it exceeds [`F_TOP`]; else each table of the k stencil (the table of k
-//!    itself, or the [`K_STENCIL`] around it in ln k) gives g = ln(F - 1) at (y, u = ln(x_s - x))
-//!    where vouched, and the polynomial in ln k through them combines them (quintic); closer to
-//!    x_s than vouched, F is at least its
-//!    value at the closest vouched distance (the rows' ratios increase towards the end);
+//!    itself, or the [`K_STENCIL`] tables around it in ln k) gives g = ln(F - 1) at
+//!    (y, u = ln(x_s - x)) where vouched, and the polynomial in ln k through them (quintic)
+//!    combines them; closer to x_s than vouched, F is at least its value at the closest vouched
+//!    distance (the rows' ratios increase towards the end);
 //! 3. F_on likewise, on the strip (w = ln(x_on - x)) for x within half a strip of x_s, on the
 //!    body elsewhere;
 //! 4. each ratio is compared with f_max: clearly below (an answer), clearly above (no
@@ -16,7 +16,6 @@
 
 use super::binary::Table;
 use super::format::F_TOP;
-use super::interp::lagrange;
 use super::table::Curve;
 use super::MasterTables;
 
@@ -71,12 +70,12 @@ fn side(e: Eval, f_max: f64) -> Side {
     }
 }
 
-/// The tables that answer at k: one (k is a table's own) or [`K_STENCIL`] around k in ln k, with
-/// the interval of k between two tables (for the k checks) and the Lagrange weights of k. Fixed
-/// arrays: no allocation per answer.
 /// A plain pair kept: `((y, x), [g F, g F_on])`.
 type PlainPair = ((f64, f64), Option<[f64; 2]>);
 
+/// The tables that answer at k: one (k is a table's own) or [`K_STENCIL`] around k in ln k, with
+/// the interval of k between two tables (for the k checks) and the Lagrange weights of k. Fixed
+/// arrays: no allocation per answer.
 struct KStencil<'a> {
     /// The last plain pair asked for: F and F_on are asked at the same point, and one search
     /// along each row serves both.
@@ -156,11 +155,18 @@ impl MasterTables {
             tables[q] = self.table(s + q)?;
             ln_k[q] = ks[s + q].ln();
         }
+        // the Lagrange basis at ln k: one division a table
+        let (x, xs) = (k.ln(), &ln_k[..width]);
         let mut weights = [0.0; K_STENCIL];
         for (q, w) in weights.iter_mut().enumerate().take(width) {
-            let mut unit = [0.0; K_STENCIL];
-            unit[q] = 1.0;
-            *w = lagrange(&ln_k[..width], &unit[..width], k.ln());
+            let (mut num, mut den) = (1.0, 1.0);
+            for (m, &xm) in xs.iter().enumerate() {
+                if m != q {
+                    num *= x - xm;
+                    den *= xs[q] - xm;
+                }
+            }
+            *w = num / den;
         }
         Some(KStencil {
             plain: Default::default(),

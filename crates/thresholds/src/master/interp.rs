@@ -19,7 +19,8 @@ pub(crate) fn stencil_start(i: usize, n: usize) -> usize {
     i.saturating_sub(1).min(n - width)
 }
 
-/// The value at `x` of the polynomial through `(xs[j], ys[j])` (Lagrange form; 2 to 4 points).
+/// The value at `x` of the polynomial through `(xs[j], ys[j])` (Lagrange form; two or more
+/// points, four written out).
 pub(crate) fn lagrange(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     if xs.len() == 4 {
         let w = weights4(xs, x);

@@ -97,7 +97,7 @@ pub struct Ratios {
 
 /// The master tables of every k and their end curves (see the module documentation), read
 /// from the embedded binary form: its index at once, each table and the end curves on first
-/// use (tens of microseconds each).
+/// use, read in place (0.06 ms for the end curves, 0.2-0.3 ms a table).
 #[derive(Debug)]
 pub struct MasterTables {
     bytes: &'static [u8],
