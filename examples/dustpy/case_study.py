@@ -154,16 +154,17 @@ def resume(sim, path: Path, settings: dict) -> float:
     return float(saved["seconds"])
 
 
-#: Checkpoint spacing (yr) after the first 1e4 years: about 20 minutes of a grain-physics run
-#: at 50 radial cells (time steps of 3 yr, 0.35 s each), what a kill can cost.
-CHECKPOINT_YEARS = 1e4
+#: Checkpoint spacing (yr) after the first 5e3 years: about 5 minutes of a core for a
+#: grain-physics run at 50 radial cells once bodies pass St = 1 (time steps of 3 yr, 0.35 s
+#: each), what a kill can cost a run that goes on over several sittings.
+CHECKPOINT_YEARS = 2.5e3
 
 
 def milestones(years: float) -> list:
     """The times (yr) a run reports and saves a checkpoint at: 1e3, 2e3, 5e3, then every
     CHECKPOINT_YEARS below ``years``, then ``years``."""
     marks = [1e3, 2e3, 5e3] + [CHECKPOINT_YEARS * i for i in range(1, int(years / CHECKPOINT_YEARS) + 1)]
-    return [m for m in marks if m < years] + [years]
+    return sorted({m for m in marks if m < years}) + [years]
 
 
 #: Below this dust-to-gas ratio a cell holds only DustPy's floor values (the outer disc, emptied
