@@ -163,7 +163,8 @@ CHECKPOINT_YEARS = 2.5e3
 def milestones(years: float) -> list:
     """The times (yr) a run reports and saves a checkpoint at: 1e3, 2e3, 5e3, then every
     CHECKPOINT_YEARS below ``years``, then ``years``."""
-    marks = [1e3, 2e3, 5e3] + [CHECKPOINT_YEARS * i for i in range(1, int(years / CHECKPOINT_YEARS) + 1)]
+    every = [CHECKPOINT_YEARS * i for i in range(1, int(years / CHECKPOINT_YEARS) + 1)]
+    marks = [1e3, 2e3, 5e3] + every
     return sorted({m for m in marks if m < years}) + [years]
 
 

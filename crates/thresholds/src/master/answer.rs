@@ -16,6 +16,7 @@
 
 use super::binary::Table;
 use super::format::F_TOP;
+use super::interp::lagrange_weight;
 use super::table::Curve;
 use super::MasterTables;
 
@@ -155,18 +156,9 @@ impl MasterTables {
             tables[q] = self.table(s + q)?;
             ln_k[q] = ks[s + q].ln();
         }
-        // the Lagrange basis at ln k: one division a table
-        let (x, xs) = (k.ln(), &ln_k[..width]);
         let mut weights = [0.0; K_STENCIL];
         for (q, w) in weights.iter_mut().enumerate().take(width) {
-            let (mut num, mut den) = (1.0, 1.0);
-            for (m, &xm) in xs.iter().enumerate() {
-                if m != q {
-                    num *= x - xm;
-                    den *= xs[q] - xm;
-                }
-            }
-            *w = num / den;
+            *w = lagrange_weight(&ln_k[..width], q, k.ln());
         }
         Some(KStencil {
             plain: Default::default(),

@@ -1,9 +1,10 @@
 //! The master tables as the library interpolates them ([`Table`]: node coordinates already
 //! turned into `u = ln(end - x)` and the ratios into `g = ln(ratio - 1)`) and their binary form:
 //! every table and the end curves as little-endian `f64` arrays ([`crate::bytes`]), which the
-//! library borrows in place from the embedded form ([`Floats`]). Made by the build script (`crates/thresholds/build.rs`, which
-//! includes this file, [`super::format`] and [`crate::bytes`]) from the committed text, read by
-//! the library on first use; `std` only.
+//! library borrows in place from the embedded form ([`Floats`]). Made by the build script
+//! (`crates/thresholds/build.rs`, which includes this file, [`super::format`] and
+//! [`crate::bytes`]) from the committed text, read by the library on first use; `std` and
+//! `bytemuck` only.
 
 use super::format::{CellData, EndsData, PieceData, TableData};
 use crate::bytes::{self, Reader, Writer};

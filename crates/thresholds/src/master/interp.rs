@@ -26,18 +26,23 @@ pub(crate) fn lagrange(xs: &[f64], ys: &[f64], x: f64) -> f64 {
         let w = weights4(xs, x);
         return w[0] * ys[0] + w[1] * ys[1] + w[2] * ys[2] + w[3] * ys[3];
     }
-    let mut sum = 0.0;
-    for (j, (&xj, &yj)) in xs.iter().zip(ys).enumerate() {
-        let (mut num, mut den) = (1.0, 1.0);
-        for (m, &xm) in xs.iter().enumerate() {
-            if m != j {
-                num *= x - xm;
-                den *= xj - xm;
-            }
+    ys.iter()
+        .enumerate()
+        .map(|(j, &yj)| lagrange_weight(xs, j, x) * yj)
+        .sum()
+}
+
+/// The Lagrange basis polynomial of node `j` of `xs` at `x` (one division): the weight of
+/// `ys[j]` in [`lagrange`].
+pub(crate) fn lagrange_weight(xs: &[f64], j: usize, x: f64) -> f64 {
+    let (mut num, mut den) = (1.0, 1.0);
+    for (m, &xm) in xs.iter().enumerate() {
+        if m != j {
+            num *= x - xm;
+            den *= xs[j] - xm;
         }
-        sum += num / den * yj;
     }
-    sum
+    num / den
 }
 
 /// The cubic Lagrange weights of the four nodes `xs` at `x`, written out (the answer's hot

@@ -177,8 +177,8 @@ impl MasterTables {
         self.k.len() >= 4 && e.kcheck_y.2 > 0 && e.kcheck.len() == (self.k.len() - 1) * e.kcheck_y.2
     }
 
-    /// The limits of the polynomial in ln k between tables `i` and `i + 1` at `y`, as a table's cell
-    /// ([`format::CellData::limits`]); `None` where it was not checked.
+    /// The limits of the polynomial in ln k between tables `i` and `i + 1` at `y`, as a table's
+    /// cell ([`format::CellData::limits`]); `None` where it was not checked.
     fn k_check(&self, i: usize, y: f64) -> Option<[f64; 5]> {
         let e: &EndsData = self.ends()?.data();
         let (y0, dy, ny) = e.kcheck_y;
