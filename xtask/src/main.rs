@@ -48,6 +48,11 @@ enum Command {
         /// table; the tables answer with the search there until it is built.
         #[arg(long, allow_hyphen_values = true)]
         y_min: Option<f64>,
+        /// With `--part tables`: grow the committed tables instead of building them anew: their
+        /// rows kept, rows added below down to `--y-min`, and their cells never checked (the
+        /// first and last) checked.
+        #[arg(long)]
+        extend: bool,
     },
     /// Build the restitution tables (V_out and e of single collisions over the two
     /// dimensionless numbers, k and the impact speed) with the ODE, on the committed master
@@ -104,11 +109,12 @@ fn main() -> ExitCode {
             part,
             only,
             y_min,
+            extend,
         } => {
             if check {
                 xtask::master_table::run_check(&workspace_root())
             } else {
-                xtask::master_table::run_build(&workspace_root(), part, &only, y_min)
+                xtask::master_table::run_build(&workspace_root(), part, &only, y_min, extend)
             }
         }
         Command::Docs => {

@@ -8,7 +8,7 @@ use crate::figures::Error;
 use numerics::format::number;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
-use thresholds::master::build::cells::build_table;
+use thresholds::master::build::cells::extend_table;
 use thresholds::master::build::check::{
     check_ends, check_nodes, END_TOL, ILL_CONDITIONED_BELOW_Y, ILL_CONDITIONED_TOL, NODE_REL_TOL,
 };
@@ -102,8 +102,15 @@ pub fn committed_tables(root: &Path) -> Result<Vec<TableData>, Error> {
 }
 
 /// Builds `part` (and `only` these table indices, if given; tables from the row `y_min` up, if
-/// given) and writes it.
-pub fn run_build(root: &Path, part: Part, only: &[usize], y_min: Option<f64>) -> Result<(), Error> {
+/// given; with `extend`, each table grown from the committed one: its rows kept, rows added
+/// below down to `y_min`, its cells never checked checked) and writes it.
+pub fn run_build(
+    root: &Path,
+    part: Part,
+    only: &[usize],
+    y_min: Option<f64>,
+    extend: bool,
+) -> Result<(), Error> {
     let start = Instant::now();
     let mut cfg = BuildConfig::standard();
     if let Some(y) = y_min {
@@ -136,11 +143,33 @@ pub fn run_build(root: &Path, part: Part, only: &[usize], y_min: Option<f64>) ->
     }
     if matches!(part, Part::All | Part::Tables) {
         let ends = committed_ends(root)?;
+        let mut committed = if extend {
+            committed_tables(root)?
+        } else {
+            Vec::new()
+        };
         for i in 0..cfg.table_k.2 {
             if !only.is_empty() && !only.contains(&i) {
                 continue;
             }
-            let mut t = build_table(&cfg, i, &ends, &progress)?;
+            let k = thresholds::master::build::grid_k(cfg.table_k.0, cfg.table_k.1, i);
+            let from = match committed.iter().position(|t| (t.k / k - 1.0).abs() < 1e-9) {
+                Some(at) => Some(committed.swap_remove(at)),
+                None if extend => {
+                    return Err(format!("--extend: no committed table of k = {k}").into())
+                }
+                None => None,
+            };
+            let kept = from.as_ref().map(|t| {
+                let was = |key: &str| t.header.iter().find(|h| h.starts_with(key)).cloned();
+                format!(
+                    "extended: the rows from y = {} kept from the table of {}",
+                    t.rows.first().map_or(f64::NAN, |r| r.y),
+                    was("commit: ").map_or("an unknown commit".into(), |c| c.replace(": ", " "))
+                )
+            });
+            let mut t = extend_table(&cfg, i, from, &ends, &progress)?;
+            t.header.extend(kept);
             t.header.splice(0..0, stamp.iter().cloned());
             let path = table_path(root, t.k);
             std::fs::write(&path, table_to_text(&t))?;

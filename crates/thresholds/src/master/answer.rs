@@ -2,7 +2,9 @@
 //! the tables cannot vouch (the caller then searches).
 //!
 //! For a query (x, y, k) and the search limit f_max = v_max / V_stick,JKR:
-//! 1. the end curves give x_s and x_on at (y, k) ([`super::ends`]);
+//! 1. the end curves give x_s and x_on at (y, k) ([`super::ends`]); next to the kink where the
+//!    cliff changes regime, where they are not interpolated, only upper bounds of them, which
+//!    tell "beyond the end" (step 2) and nothing else;
 //! 2. F: for x >= x_s it exceeds [`F_TOP`]; else each table of the k stencil (the table of k
 //!    itself, or the [`K_STENCIL`] tables around it in ln k) gives g = ln(F - 1) at
 //!    (y, u = ln(x_s - x)) where vouched, and the polynomial in ln k through them (quintic)
@@ -298,10 +300,15 @@ impl MasterTables {
                 _ => None,
             }
         };
+        // next to the kink of the end curves, only "beyond the end" is known, from a bound
+        let bound = match ends {
+            None => self.ends().and_then(|e| e.upper_bound(y, k)),
+            Some(_) => None,
+        };
         let x_s = ends.map(|e| e.x_s);
-        let stick =
-            beyond(x_s).unwrap_or_else(|| side(self.eval(&ks, Curve::Stick, x, y, x_s), f_max));
-        let onset = beyond(ends.map(|e| e.x_on)).unwrap_or_else(|| {
+        let stick = beyond(x_s.or(bound.map(|b| b.x_s)))
+            .unwrap_or_else(|| side(self.eval(&ks, Curve::Stick, x, y, x_s), f_max));
+        let onset = beyond(ends.or(bound).map(|e| e.x_on)).unwrap_or_else(|| {
             let on_strip = ends
                 .filter(|e| x > e.x_s - 0.5 * (e.x_on - e.x_s))
                 .map(|e| self.eval(&ks, Curve::OnsetStrip, x, y, Some(e.x_on)))

@@ -10,6 +10,13 @@
 use super::format::EndsData;
 use super::interp::uniform_weights;
 
+/// Where the end curves are not interpolated (next to the kink where the cliff changes regime),
+/// a point this far (in x) beyond the largest end of the sixteen grid points around it is
+/// beyond its end: larger than what a curve can rise between grid points (its second
+/// difference reaches 2.5e-2 a step next to the kink, an eighth of it within a cell) and the
+/// fuzz of the ends there (5e-7).
+pub const KINK_MARGIN: f64 = 0.01;
+
 /// The end curves, ready to interpolate.
 #[derive(Debug, Clone, PartialEq)]
 pub struct EndCurves {
@@ -81,6 +88,30 @@ impl EndCurves {
         (s.is_finite() && o.is_finite()).then_some(Ends {
             x_s: s,
             x_on: o.max(s),
+        })
+    }
+
+    /// Upper bounds of the end curves at `(y, k)` that hold next to a kink, where [`Self::at`]
+    /// declines: the largest of each curve over the sixteen grid points around `(y, k)` plus
+    /// [`KINK_MARGIN`]; `None` outside the grid or where a value is missing.
+    pub fn upper_bound(&self, y: f64, k: f64) -> Option<Ends> {
+        let d = &self.data;
+        let (iy, _) = uniform_weights((y - d.y0) / d.dy, d.ny)?;
+        let (ik, _) = uniform_weights((k.ln() - self.ln_k0) * self.per_ln, d.nk)?;
+        let (mut s, mut o) = (f64::NEG_INFINITY, f64::NEG_INFINITY);
+        for a in 0..4 {
+            for b in 0..4 {
+                let at = (ik + a) * d.ny + iy + b;
+                s = s.max(d.x_s[at]);
+                o = o.max(d.x_on[at]);
+                if !(d.x_s[at].is_finite() && d.x_on[at].is_finite()) {
+                    return None;
+                }
+            }
+        }
+        Some(Ends {
+            x_s: s + KINK_MARGIN,
+            x_on: o.max(s) + KINK_MARGIN,
         })
     }
 }

@@ -55,11 +55,11 @@ fn plain_u(row: &binary::Row, x: f64) -> Option<f64> {
 }
 
 impl Table {
-    /// The four rows around `y` (the first index), with their cell; `None` unless `y` lies in a
-    /// cell with a full stencil that is not one of the two end cells.
+    /// The four rows around `y` (the first index, shifted inward in the two end cells, as the
+    /// build checked them), with their cell; `None` outside the rows or with fewer than four.
     fn stencil(&self, y: f64) -> Option<(usize, usize)> {
         let n = self.rows.len();
-        if n < 4 || !(y >= self.ys[1] && y <= self.ys[n - 2]) {
+        if n < 4 || !(y >= self.ys[0] && y <= self.ys[n - 1]) {
             return None;
         }
         // the bin's cell (no search), checked; a search where the rows are off the bins' grid

@@ -10,6 +10,7 @@ use crate::master::interp::{lagrange, local_cubic, stencil_start};
 use crate::ThresholdsError;
 use greenwood::CrackLaw;
 use numerics::format::number;
+use numerics::OutOfRange;
 use rayon::prelude::*;
 
 /// The end curves' grid point of `y` at table `k_index` (an exact point of the grid: rows lie on
@@ -198,6 +199,22 @@ pub fn build_table(
     ends: &EndsData,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<TableData, ThresholdsError> {
+    extend_table(cfg, k_index, None, ends, progress)
+}
+
+/// The table of `k_index` grown from `committed` (the same k): its rows kept, rows added every
+/// [`BuildConfig::y_step`] below its lowest down to `cfg.y_range.0`, and every cell never checked
+/// (the new ones, and the first and last of a table built before edge cells were checked: their
+/// stencil is the four rows nearest, shifted inward; the first only if it lies above
+/// `cfg.y_range.0`) checked and split as in a build. Without `committed`, the whole table is
+/// built.
+pub fn extend_table(
+    cfg: &BuildConfig,
+    k_index: usize,
+    committed: Option<TableData>,
+    ends: &EndsData,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<TableData, ThresholdsError> {
     let (k0, per, _) = cfg.table_k;
     let k = grid_k(k0, per, k_index);
     let law = CrackLaw::new(k)?;
@@ -217,21 +234,93 @@ pub fn build_table(
         ));
         Some(r)
     };
-    let (y0, y1) = cfg.y_range;
-    let n0 = ((y1 - y0) / cfg.y_step).round() as usize + 1;
+    let (y0, mut y1) = cfg.y_range;
+    let (old_rows, old_cells) = match committed {
+        Some(t) if (t.k / k - 1.0).abs() < 1e-9 && !t.rows.is_empty() => (t.rows, t.cells),
+        Some(t) => {
+            let allowed = format!("the table's k = {k}, with at least one row");
+            return Err(OutOfRange::new("k", t.k, allowed, "dimensionless").into());
+        }
+        None => (Vec::new(), Vec::new()),
+    };
+    if let Some(first) = old_rows.first() {
+        y1 = first.y - 0.5 * cfg.y_step;
+    }
+    let n0 = ((y1 - y0) / cfg.y_step).floor().max(-1.0) as i64 + 1;
     let ys: Vec<f64> = (0..n0).map(|i| y0 + i as f64 * cfg.y_step).collect();
     let mut rows: Vec<RowData> = ys.par_iter().filter_map(|&y| row_at(y)).collect();
-    let mut cells: Vec<Option<CellData>> = vec![None; rows.len().saturating_sub(1)];
+    let added = rows.len();
+    let mut cells: Vec<Option<CellData>> = vec![None; added];
+    cells.extend(old_cells.into_iter().map(Some));
+    rows.extend(old_rows);
+    cells.truncate(rows.len().saturating_sub(1));
+    // the new cells, the old first one (its stencil changed, or never checked; not below y0)
+    // and the last one (never checked)
+    let last = cells.len().saturating_sub(1);
+    for (j, c) in cells.iter_mut().enumerate() {
+        if (j <= added && rows[j].y >= y0) || j == last {
+            *c = None;
+        }
+    }
+    refine(
+        cfg, &law, &cache, &curves, &mut rows, &mut cells, &row_at, progress,
+    );
+    let header = vec![
+        format!(
+            "master table of F = V_stick/V_stick,JKR and F_on = V_double_onset/V_stick,JKR over x = log10 c_D, y = log10(c_D c_a), k = {k}"
+        ),
+        format!(
+            "nodes: the exact search at rel_tol = {}, collisions at rtol = {}, c_a clamped at 1e{}; F up to {F_TOP} (x_s, x_on: the end curves)",
+            number(cfg.rel_tol),
+            number(cfg.solver.rtol),
+            cfg.z_clamp
+        ),
+        format!(
+            "interpolation: local cubics of ln(ratio - 1) in u = ln(x_s - x) (body) and w = ln(x_on - x) (strip), then in y in plain x (cell x_hi) or at a fixed distance to the end (cell d_lo); every midpoint checked to {}; the default search agrees with every vouched node to {}",
+            number(cfg.tol),
+            number(cfg.agree)
+        ),
+        format!(
+            "domain: x from {}, y in [{}, {}]; d_lo: vouched where the distance to the end is at least this",
+            number(cfg.x_min),
+            number(rows.first().map_or(y0, |r| r.y)),
+            number(rows.last().map_or(y0, |r| r.y))
+        ),
+    ];
+    Ok(TableData {
+        k,
+        header,
+        cells: cells
+            .into_iter()
+            .map(|c| c.unwrap_or(CellData::NONE))
+            .collect(),
+        rows,
+    })
+}
+
+/// Checks every cell not yet checked (`None`; a cell's stencil is the four rows around it,
+/// shifted inward at the ends), and splits those that fail with a row in their middle, down to
+/// [`BuildConfig::min_y_step`], until every cell is checked.
+#[allow(clippy::too_many_arguments)]
+fn refine(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    cache: &Cache,
+    curves: &EndCurves,
+    rows: &mut Vec<RowData>,
+    cells: &mut Vec<Option<CellData>>,
+    row_at: &(dyn Fn(f64) -> Option<RowData> + Sync),
+    progress: &(dyn Fn(&str) + Sync),
+) {
+    let k = law.k();
     loop {
-        let unchecked: Vec<usize> = (1..rows.len().saturating_sub(2))
-            .filter(|&j| cells[j].is_none())
-            .collect();
+        let unchecked: Vec<usize> = (0..cells.len()).filter(|&j| cells[j].is_none()).collect();
         if unchecked.is_empty() {
             break;
         }
         let mut split = Vec::new();
         for &j in &unchecked {
-            let (cell, ok) = check_cell(cfg, &law, &cache, &curves, &rows, j);
+            let (cell, ok) = check_cell(cfg, law, cache, curves, rows, j);
             let can_split = rows[j + 1].y - rows[j].y > cfg.min_y_step * 1.5;
             if ok || !can_split {
                 cells[j] = Some(cell);
@@ -269,35 +358,4 @@ pub fn build_table(
             }
         }
     }
-    let header = vec![
-        format!(
-            "master table of F = V_stick/V_stick,JKR and F_on = V_double_onset/V_stick,JKR over x = log10 c_D, y = log10(c_D c_a), k = {k}"
-        ),
-        format!(
-            "nodes: the exact search at rel_tol = {}, collisions at rtol = {}, c_a clamped at 1e{}; F up to {F_TOP} (x_s, x_on: the end curves)",
-            number(cfg.rel_tol),
-            number(cfg.solver.rtol),
-            cfg.z_clamp
-        ),
-        format!(
-            "interpolation: local cubics of ln(ratio - 1) in u = ln(x_s - x) (body) and w = ln(x_on - x) (strip), then in y in plain x (cell x_hi) or at a fixed distance to the end (cell d_lo); every midpoint checked to {}; the default search agrees with every vouched node to {}",
-            number(cfg.tol),
-            number(cfg.agree)
-        ),
-        format!(
-            "domain: x from {}, y in [{}, {}]; d_lo: vouched where the distance to the end is at least this",
-            number(cfg.x_min),
-            number(y0),
-            number(y1)
-        ),
-    ];
-    Ok(TableData {
-        k,
-        header,
-        cells: cells
-            .into_iter()
-            .map(|c| c.unwrap_or(CellData::NONE))
-            .collect(),
-        rows,
-    })
 }
