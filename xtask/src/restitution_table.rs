@@ -10,7 +10,7 @@ use numerics::format::number;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use thresholds::master::build::grid_k;
-use thresholds::restitution::build::{build_table, k_cells, BuildConfig};
+use thresholds::restitution::build::{build_table, k_cells, ratios, BuildConfig};
 use thresholds::restitution::format::{parse, TableData};
 use thresholds::restitution::to_text;
 use thresholds::{CrackLaw, MasterTables};
@@ -87,6 +87,7 @@ pub fn run_build(root: &Path, only: &[usize]) -> Result<(), Error> {
 /// Recomputes a sample of the committed values; an error naming the first that moved.
 pub fn run_check(root: &Path) -> Result<(), Error> {
     let cfg = BuildConfig::standard();
+    let masters = MasterTables::standard();
     for t in committed(root)? {
         let law = CrackLaw::new(t.k)?;
         let mut checked = 0;
@@ -109,8 +110,16 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
             } else {
                 cfg.nu[c - cfg.sigma.len()]
             };
+            // the thresholds as the build had them (the file rounds them)
+            let Some((f, f_on)) = ratios(masters, p.x, y, t.k) else {
+                return Err(format!(
+                    "the restitution table of k = {} is stale: the master tables no longer vouch for x = {}, y = {y}",
+                    t.k, p.x
+                )
+                .into());
+            };
             let now = thresholds::restitution::build::node_channel(
-                &cfg, &law, p.x, y, p.f, p.f_on, bouncing, q,
+                &cfg, &law, p.x, y, f, f_on, bouncing, q,
             );
             let within = (now - p.h[c]).abs() <= CHECK_TOL * p.h[c].abs().max(1e-6);
             if !within {

@@ -2,7 +2,8 @@
 //! machine.
 //!
 //! 1. `cargo test --workspace` (which also builds the `stickiness` binary), then
-//!    `cargo xtask master-table --check` (a sample of the master tables' nodes recomputed);
+//!    `cargo xtask master-table --check` and `cargo xtask restitution-table --check` (a sample
+//!    of the tables' values recomputed);
 //! 2. a virtual environment under `target/venv` with the Python test dependencies;
 //! 3. the package as users install it: its wheel (`cargo xtask wheel`, here on the workspace's
 //!    opt-level-3 dev profile, so that it reuses the build of step 1), installed into it;
@@ -122,6 +123,8 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
         // a change of the model must not leave the committed master tables stale
         eprintln!("+ cargo xtask master-table --check");
         crate::master_table::run_check(root)?;
+        eprintln!("+ cargo xtask restitution-table --check");
+        crate::restitution_table::run_check(root)?;
     }
     if !parts.python {
         return Ok(());

@@ -82,3 +82,16 @@ pub fn draw(rng: &mut Rng, answered: bool) -> Point {
         t_vis: rng.log_uniform(1e-16, 1e-3),
     }
 }
+
+/// An impact speed (m/s) around the thresholds `v_stick` and `v_on` (m/s) up to `v_max`: half
+/// the time bouncing (ln(V_in/V_stick) log-uniform from 1e-4 to its largest), else a double
+/// collision (V_in log-uniform between V_on and V_stick).
+#[allow(dead_code)] // the restitution tables' example and test use it, the master tables' not
+pub fn impact_speed(rng: &mut Rng, v_stick: f64, v_on: f64, v_max: f64) -> f64 {
+    if rng.next() < 0.5 || v_on >= v_stick {
+        let top = (v_max / v_stick).ln().max(2e-4);
+        v_stick * rng.log_uniform(1e-4, top).exp()
+    } else {
+        rng.log_uniform(v_on, v_stick)
+    }
+}

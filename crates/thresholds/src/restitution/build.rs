@@ -17,7 +17,7 @@
 //! 8e-3 just above V_stick (-e^2 is not smooth enough in sigma there: a finer or graded first
 //! channel step, or another variable, is needed). No table is committed until the cells hold.
 
-use super::format::{NodeData, RowData, Table, TableData};
+use super::format::{channel_at, channel_coordinate, NodeData, RowData, Table, TableData};
 use super::{RestitutionTables, MIN_WINDOW};
 use crate::master::build::{grid_k, synthetic};
 use crate::master::format::EndsData;
@@ -30,13 +30,16 @@ use rayon::prelude::*;
 /// The settings of a build.
 #[derive(Debug, Clone, PartialEq)]
 pub struct BuildConfig {
-    /// The bouncing channels, sigma = ln(V_in / V_stick): every 0.05 up to 1, every 0.125 up
-    /// to 3, every 0.5 up to 9.5 (V_in up to 1.3e4 V_stick; the rebound saturates far above
-    /// V_stick). A pilot at k = 0.01 with half as many below 3 missed e by 8e-5 at sigma = 0.05
-    /// and 3e-5 at 1.6 in the JKR limit (channel cubic error ~ step^4).
+    /// The bouncing channels, sigma = ln(V_in / V_stick), evenly in ln sigma + sigma
+    /// ([`CHANNEL_STEP`], [`channel_coordinate`]) from [`SIGMA_MIN`] to 9.5 (V_in up to 1.3e4 V_stick; the rebound
+    /// saturates far above V_stick). A pilot at k = 0.01 with channels evenly in sigma (every
+    /// 0.05 from 0) and h = -e^2 missed e by up to 8e-3 just above V_stick, where |V_out| changes
+    /// from linear in the distance to V_stick to its square root within the first step.
     pub sigma: Vec<f64>,
-    /// The double-collision channels, nu in [0, 0.999] (nu = 1 is the onset, where the outcome
-    /// jumps), every 0.05.
+    /// The double-collision channels, nu in (0, 1) (nu = 1 is the onset, where the outcome
+    /// jumps), evenly in logit nu = ln(nu / (1 - nu)) from [`SIGMA_MIN`] to [`NU_MAX`]: towards
+    /// the onset |V_out| rises about as ln(1/(1 - nu)) (by 0.0104 V_stick from 1 - nu = 1e-2 to
+    /// 1e-4 at x = -0.52, y = 1.5, k = 0.01), which channels evenly in ln nu missed by 2.6 %.
     pub nu: Vec<f64>,
     /// Row spacing in y.
     pub y_step: f64,
@@ -70,13 +73,31 @@ impl BuildConfig {
 
     /// The settings of the committed tables.
     pub fn standard() -> Self {
-        let mut sigma: Vec<f64> = (0..=20).map(|i| i as f64 * 0.05).collect();
-        sigma.extend((1..=16).map(|i| 1.0 + i as f64 * 0.125));
-        sigma.extend((1..=13).map(|i| 3.0 + i as f64 * 0.5));
+        // channels evenly in the interpolation coordinate, from lo to hi
+        let even = |bouncing: bool, lo: f64, hi: f64| -> Vec<f64> {
+            let (a, b) = (
+                channel_coordinate(bouncing, lo),
+                channel_coordinate(bouncing, hi),
+            );
+            let n = ((b - a) / CHANNEL_STEP).ceil() as usize;
+            (0..=n)
+                .map(|i| channel_at(bouncing, a + (b - a) * i as f64 / n as f64))
+                .collect()
+        };
+        let (sigma, nu) = (even(true, SIGMA_MIN, 9.5), even(false, SIGMA_MIN, NU_MAX));
+        // between channels, where the cubic along them misses most, spread over the range
+        let mid = |b: bool, g: &[f64], i: usize| {
+            let z = 0.5 * (channel_coordinate(b, g[i]) + channel_coordinate(b, g[i + 1]));
+            channel_at(b, z)
+        };
+        let check_sigma = [3, 12, 24, 36, 50, 64, 76]
+            .map(|i| mid(true, &sigma, i))
+            .to_vec();
+        let check_nu = [3, 15, 30, 45, 55, 62].map(|i| mid(false, &nu, i)).to_vec();
         Self {
             sigma,
-            nu: (0..=20).map(|i| i as f64 * 0.04995).collect(),
-            y_step: 0.5,
+            nu,
+            y_step: 0.25,
             y_range: (-6.5, 6.0),
             x_min: -12.0,
             x_step: 0.5,
@@ -85,11 +106,21 @@ impl BuildConfig {
             min_u_step: 1.0 / 32.0,
             solver: SolverOptions::default(),
             tol_e: 5e-5,
-            check_sigma: vec![0.05, 0.35, 0.85, 1.6, 3.75, 6.25],
-            check_nu: vec![0.45, 0.95],
+            check_sigma,
+            check_nu,
         }
     }
 }
+
+/// The channels' spacing in ln sigma and ln nu: 0.25.
+pub const CHANNEL_STEP: f64 = 0.25;
+
+/// The first channel of each side, sigma (nu) = 1e-4: closer to V_stick the tables decline and
+/// the ODE answers (the master tables' V_stick is good to 2e-6, a fiftieth of it).
+pub const SIGMA_MIN: f64 = 1e-4;
+
+/// The last double-collision channel, nu = 0.999: closer to the onset the ODE answers.
+pub const NU_MAX: f64 = 0.999;
 
 /// `(outcome, V_out / V_stick,JKR)` of one collision at `(x, y)` for `law`, at `s` V_stick,JKR.
 fn collide(cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64, s: f64) -> Option<(Outcome, f64)> {
@@ -104,8 +135,8 @@ fn collide(cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64, s: f64) -> Option<
 }
 
 /// The channel value of the collision at channel `q` (sigma when `bouncing`, else nu) of the
-/// node at `(x, y)` with ratios `f`, `f_on` ([`super::format`]: `-e^2` bouncing, `w |w|` with
-/// `w = V_out / V_stick` on the double side); NaN where it cannot be had.
+/// node at `(x, y)` with ratios `f`, `f_on` ([`super::format`]: `h = ln(|V_out| / V_stick)`);
+/// NaN where it cannot be had (V_out of the wrong sign: the ODE answers there).
 #[allow(clippy::too_many_arguments)]
 pub fn node_channel(
     cfg: &BuildConfig,
@@ -117,9 +148,6 @@ pub fn node_channel(
     bouncing: bool,
     q: f64,
 ) -> f64 {
-    if q == 0.0 {
-        return 0.0;
-    }
     let window = (f / f_on).ln();
     let s = if bouncing {
         f * q.exp()
@@ -128,25 +156,28 @@ pub fn node_channel(
     } else {
         return f64::NAN;
     };
-    if s > F_TOP * 1.3 {
+    // channels a little beyond the search limit, so that the cubic along them reaches it
+    if s > F_TOP * 2.0 {
         return f64::NAN;
     }
     match collide(cfg, law, x, y, s) {
         Some((Outcome::Sticking, _)) | None => f64::NAN,
         Some((_, v_out)) => {
-            let w = v_out / f;
-            if bouncing {
-                // -e^2 = w |w| e^(-2 sigma): bounded where w|w| grows as e^(2 sigma)
-                w * w.abs() * (-2.0 * q).exp()
+            // V_out < 0 above V_stick (bouncing), > 0 below (double collision)
+            let w = if bouncing { -v_out / f } else { v_out / f };
+            if w > 0.0 {
+                w.ln()
             } else {
-                w * w.abs()
+                f64::NAN
             }
         }
     }
 }
 
-/// The master tables' F and F_on at a point (both below F_TOP), if they vouch for them.
-fn ratios(masters: &MasterTables, x: f64, y: f64, k: f64) -> Option<(f64, f64)> {
+/// The master tables' F and F_on at a point (both below F_TOP), if they vouch for them: the
+/// thresholds a node's channels are placed by (its file keeps them to 8 figures only, too few
+/// to place the channels of a narrow double-collision window again).
+pub fn ratios(masters: &MasterTables, x: f64, y: f64, k: f64) -> Option<(f64, f64)> {
     let r = masters.ratios_at(x, y, k, F_TOP * (1.0 - 1e-3))?;
     Some((r.v_stick?, r.v_double_onset?))
 }
@@ -154,10 +185,11 @@ fn ratios(masters: &MasterTables, x: f64, y: f64, k: f64) -> Option<(f64, f64)> 
 /// e = -V_out / V_in from the channel value `h` at `s` V_stick,JKR with V_stick = `f`
 /// V_stick,JKR.
 fn e_of(h: f64, f: f64, s: f64, bouncing: bool) -> f64 {
+    let e = h.exp() * f / s;
     if bouncing {
-        (-h).max(0.0).sqrt()
+        e
     } else {
-        -h.max(0.0).sqrt() * f / s
+        -e
     }
 }
 
@@ -317,11 +349,13 @@ fn check_point(
         } else {
             f * (-q * window).exp()
         };
-        if s > F_TOP {
+        // speeds the tables leave to the ODE (next to V_stick or the onset) are not checked
+        if s > F_TOP || super::channel_of(s, f, f_on).is_none() {
             continue;
         }
+        // where the tables decline (a channel without value in the stencil) they claim nothing
         let Some(h) = tables.h_unchecked(x, y, law.k(), bouncing, q) else {
-            return false;
+            continue;
         };
         let Some((outcome, v_out)) = collide(cfg, law, x, y, s) else {
             return false;
@@ -377,7 +411,7 @@ pub fn build_table(
     let mut table = TableData {
         k,
         header: vec![
-            format!("restitution table: -e^2 (bouncing) and w |w|, w = V_out/V_stick (double collisions), over x = log10 c_D, y = log10(c_D c_a), k = {k}, at channels sigma = ln(V_in/V_stick) (bouncing) and nu = ln(V_stick/V_in)/ln(F/F_on) (double collisions); V_stick and V_on from the master tables"),
+            format!("restitution table: h = ln(|V_out|/V_stick) (V_out < 0 bouncing, > 0 double collisions), over x = log10 c_D, y = log10(c_D c_a), k = {k}, at channels sigma = ln(V_in/V_stick) (bouncing) and nu = ln(V_stick/V_in)/ln(F/F_on) (double collisions), evenly in ln sigma and ln nu; V_stick and V_on from the master tables"),
             format!("nodes: one collision at rtol {} per channel; cells checked at their centres against the ODE to {} in e", number(cfg.solver.rtol), number(cfg.tol_e)),
         ],
         sigma: cfg.sigma.clone(),

@@ -4,20 +4,24 @@
 //! In the JKR units of `docs/model.md` a collision depends on (c_D, c_a, k) and on the impact
 //! speed in units of V_stick,JKR, so `w = V_out / V_stick` is one function of
 //! `(x = log10 c_D, y = log10(c_D c_a), k, V_in)` for every material, size and geometry. Along
-//! the impact speed it has two smooth pieces, which meet where V_out changes sign, at V_stick
-//! (from the master tables, [`crate::MasterTables`]):
+//! the impact speed it changes sign at V_stick (from the master tables,
+//! [`crate::MasterTables`]); on each side the tables hold `h = ln |w|` against the log of the
+//! distance to V_stick:
 //! ```text
-//! bouncing    V_in >= V_stick:          sigma = ln(V_in / V_stick)                 in [0, 9.5]
-//! double      V_on < V_in <= V_stick:   nu = ln(V_stick / V_in) / ln(F / F_on)     in [0, 0.999]
-//! h = -e^2 (bouncing), w |w| with w = V_out / V_stick (double): smooth, 0 at V_stick
+//! bouncing    V_in > V_stick:          sigma = ln(V_in / V_stick)                 in [1e-4, 9.5]
+//! double      V_on < V_in < V_stick:   nu = ln(V_stick / V_in) / ln(F / F_on)     in [1e-4, 0.999]
+//! h = ln(|V_out| / V_stick), channels evenly in ln sigma and logit nu = ln(nu / (1 - nu))
 //! ```
-//! and below V_on every collision sticks (e = 0). The tables hold h at fixed channels of sigma
-//! and nu on nodes of rows of constant y (in u = ln(x_s - x), as the master tables) for every
+//! (|V_out| grows linearly with the distance to V_stick where the contact dissipates, as its
+//! square root in the JKR limit, saturates far above V_stick and rises about as ln(1/(1 - nu))
+//! towards the onset: straight stretches in these coordinates), and below V_on every collision sticks (e = 0). The tables hold h at the
+//! channels on nodes of rows of constant y (in u = ln(x_s - x), as the master tables) for every
 //! table k; an answer is the local cubic along the channels, along the row, across rows and
 //! across k. Each cell between two rows was checked at its centre against the ODE (e within
 //! 5e-5, half the 1e-4 promised), and each interval between tables of neighbouring k likewise;
 //! elsewhere (near the cliff, a double-collision window narrower than 1e-4 of V_stick, speeds
-//! beyond 9.5 e-folds above V_stick, within 1e-4 of the onset) the caller integrates the ODE.
+//! beyond 9.5 e-folds above V_stick, within 1e-4 of V_stick in sigma or nu, within 1e-4 of the
+//! onset) the caller integrates the ODE.
 //!
 //! # Example
 //! ```
@@ -54,6 +58,33 @@ pub const ONSET_MARGIN: f64 = 1e-4;
 /// A double-collision window narrower than this (relative, `ln(F/F_on)`: the JKR limit, where
 /// it is 4e-6 wide) is not tabulated; the ODE answers inside it.
 pub const MIN_WINDOW: f64 = 1e-4;
+
+/// Within this relative distance of V_stick, where the master tables' V_stick (good to 2e-6)
+/// may lie on the wrong side, the ODE decides between bouncing and a double collision.
+pub const STICK_MARGIN: f64 = 1e-5;
+
+/// The side (bouncing or not) and channel coordinate (sigma or nu) of an impact at `s`
+/// V_stick,JKR with the thresholds `f`, `f_on` (V_stick,JKR), above the onset; `None` where the
+/// tables do not answer (the ODE does): within [`ONSET_MARGIN`] of the onset, within
+/// [`STICK_MARGIN`] of V_stick, or in a double-collision window narrower than [`MIN_WINDOW`].
+pub fn channel_of(s: f64, f: f64, f_on: f64) -> Option<(bool, f64)> {
+    let from_stick = (s / f).ln();
+    if s <= f_on * (1.0 + ONSET_MARGIN) || from_stick.abs() < STICK_MARGIN {
+        return None;
+    }
+    if from_stick > 0.0 {
+        return Some((true, from_stick));
+    }
+    let window = (f / f_on).ln();
+    (window >= MIN_WINDOW).then(|| (false, -from_stick / window))
+}
+
+/// Closer to the cliff than this (in x = log10 c_D, from the row's end x_s) the ODE answers:
+/// there the rebound just above V_stick changes fast with x and y (V_out is nearly flat in V_in
+/// and tiny), and the checks at the cells' centres do not hold for the whole cell (e = 7.8e-4
+/// from the table against 1.8e-4 from the ODE at 0.013 from x_s, y = -0.8, k = 0.01, with
+/// the cells vouched; `examples/restitution_accuracy.rs`).
+pub const CLIFF_MARGIN: f64 = 0.05;
 
 /// Two k closer than this (relative) are the same k.
 const SAME_K: f64 = 1e-12;
@@ -178,27 +209,23 @@ impl RestitutionTables {
         if s < f_on * (1.0 - ONSET_MARGIN) {
             return Some((Outcome::Sticking, 0.0));
         }
-        if s <= f_on * (1.0 + ONSET_MARGIN) {
-            return None;
-        }
-        let (side, coord) = if s > f {
-            (Side::Bouncing, (s / f).ln())
+        let (bouncing, coord) = channel_of(s, f, f_on)?;
+        let side = if bouncing {
+            Side::Bouncing
         } else {
-            let window = (f / f_on).ln();
-            if window < MIN_WINDOW {
-                return None;
-            }
-            (Side::Double, (f / s).ln() / window)
+            Side::Double
         };
-        let h = self.h(x, y, k, side, coord, true)?;
+        // h = ln(|V_out| / V_stick), interpolated in ln sigma (logit nu)
+        let z = format::channel_coordinate(side == Side::Bouncing, coord);
+        let h = self.h(x, y, k, side, z, true)?;
         Some(match side {
-            // h = -e^2: V_out = -e V_in
-            Side::Bouncing => (Outcome::Bouncing, -(-h).max(0.0).sqrt() * s),
-            Side::Double => (Outcome::DoubleCollision, h.max(0.0).sqrt() * f),
+            Side::Bouncing => (Outcome::Bouncing, -h.exp() * f),
+            Side::Double => (Outcome::DoubleCollision, h.exp() * f),
         })
     }
 
-    /// h at `(x, y, k)` on `side` at channel coordinate `coord`, from the tables around k;
+    /// h at `(x, y, k)` on `side` at channel coordinate `coord` (ln sigma or logit nu), from the
+    /// tables around k;
     /// `checked`: only where the cells (and the k cells) were vouched for.
     fn h(&self, x: f64, y: f64, k: f64, side: Side, coord: f64, checked: bool) -> Option<f64> {
         let ks = &self.k;
@@ -227,18 +254,26 @@ impl RestitutionTables {
         Some(lagrange(&ln[s..s + 4], &h, k.ln()))
     }
 
-    /// h without the checks: for the build, which computes them.
-    pub fn h_unchecked(&self, x: f64, y: f64, k: f64, bouncing: bool, coord: f64) -> Option<f64> {
+    /// h without the checks, at channel `q` (sigma or nu): for the build, which computes them.
+    pub fn h_unchecked(&self, x: f64, y: f64, k: f64, bouncing: bool, q: f64) -> Option<f64> {
         let side = if bouncing {
             Side::Bouncing
         } else {
             Side::Double
         };
-        self.h(x, y, k, side, coord, false)
+        self.h(
+            x,
+            y,
+            k,
+            side,
+            format::channel_coordinate(bouncing, q),
+            false,
+        )
     }
 }
 
-/// h of node `node` of `row` at the channel coordinate (local cubic along the channels).
+/// h of node `node` of `row` at the channel coordinate (ln sigma or logit nu; local cubic along
+/// the channels).
 fn node_h(t: &Table, row: &format::Row, node: usize, side: Side, coord: f64) -> Option<f64> {
     let channels = t.sigma.len() + t.nu.len();
     let (grid, offset) = match side {
@@ -276,6 +311,9 @@ fn table_h(
     if checked {
         // the cell of row j (to row j + 1) that holds x
         let r = &t.rows[j];
+        if r.x_s - x < CLIFF_MARGIN {
+            return None;
+        }
         let u = (r.x_s - x).ln().min(r.u[r.u.len() - 1]);
         if u.is_nan() || u < r.u[0] {
             return None;

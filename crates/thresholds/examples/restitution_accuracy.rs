@@ -1,0 +1,93 @@
+//! How much of the restitution the tables answer, how fast and how well: random collisions of
+//! the "Instant everywhere" domain (random materials, sizes, geometries, T_vis) with bouncing
+//! below the search limit, at the k of the committed restitution tables, impact speeds on both
+//! sides of V_stick (`examples/common/domain.rs`).
+//!
+//! ```sh
+//! cargo run --release -p thresholds --example restitution_accuracy -- 100000 2000
+//! ```
+//! prints the share the tables answer, the time of those answers (one thread), and against the
+//! ODE on the first `sample` of them the largest difference in e and whether every outcome
+//! agrees.
+
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use std::time::Instant;
+use thresholds::restitution::RestitutionTables;
+use thresholds::{sticking_thresholds, Collider, CrackLaw, SearchOptions};
+
+#[path = "common/domain.rs"]
+#[allow(dead_code)] // the example of the master tables reads the rest
+mod domain;
+
+use domain::{draw, Rng};
+
+fn main() {
+    let mut args = std::env::args().skip(1);
+    let n: usize = args.next().map_or(100_000, |s| s.parse().unwrap());
+    let sample: usize = args.next().map_or(2000, |s| s.parse().unwrap());
+    let tables = RestitutionTables::standard();
+    let ks = tables.table_k().to_vec();
+    assert!(!ks.is_empty(), "no restitution table is embedded");
+    // collisions with bouncing below the search limit: (point, k, V_in); the thresholds come
+    // from the master tables, a few from the search (not timed)
+    let mut rng = Rng(2030);
+    let mut cases = Vec::with_capacity(n);
+    while cases.len() < n {
+        let p = draw(&mut rng, false);
+        let k = ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)];
+        let law = CrackLaw::new(k).unwrap();
+        let opts = SearchOptions::default();
+        let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {
+            continue;
+        };
+        let (Some(vs), Some(von)) = (th.v_stick, th.v_double_onset) else {
+            continue;
+        };
+        let v_max = opts.v_max_for(p.contact.v_stick_jkr());
+        let v_in = domain::impact_speed(&mut rng, vs, von, v_max);
+        cases.push((p, k, v_in));
+    }
+    let start = Instant::now();
+    let answers: Vec<_> = cases
+        .iter()
+        .map(|(p, k, v_in)| tables.rebound(&p.contact, *k, p.t_vis, *v_in))
+        .collect();
+    let elapsed = start.elapsed().as_secs_f64();
+    let answered = answers.iter().filter(|a| a.is_some()).count();
+    println!(
+        "{n} random collisions (k = {ks:?}): the tables answered {answered} ({:.2} %) in {elapsed:.3} s, one thread ({:.2} us each)",
+        100.0 * answered as f64 / n as f64,
+        1e6 * elapsed / n as f64
+    );
+    let (mut worst, mut same, mut compared, mut over) = (0.0f64, 0, 0, 0);
+    for ((p, k, v_in), a) in cases.iter().zip(&answers).take(sample) {
+        let Some(a) = a else { continue };
+        let law = CrackLaw::new(*k).unwrap();
+        let ode = Collider::new(p.contact, &law, p.t_vis)
+            .unwrap()
+            .collide(*v_in)
+            .unwrap();
+        let miss = (a.e - ode.e).abs();
+        worst = worst.max(miss);
+        if miss > 1e-4 {
+            over += 1;
+            let d = p.contact.dimensionless(p.t_vis);
+            let th =
+                sticking_thresholds(&p.contact, &law, p.t_vis, &SearchOptions::default()).unwrap();
+            eprintln!(
+                "  |e - e_ODE| = {miss:.1e}: x = {:.3}, y = {:.3}, V_in / V_stick = {:.6}, e = {:.5} (ODE {:.5})",
+                d.c_d.log10(),
+                (d.c_d * d.c_a).log10(),
+                v_in / th.v_stick.unwrap(),
+                a.e,
+                ode.e
+            );
+        }
+        same += usize::from(a.outcome == ode.outcome);
+        compared += 1;
+    }
+    println!(
+        "against the ODE on {compared} of them: largest |e - e_ODE| = {worst:.2e} ({over} above 1e-4), the same outcome {same} of {compared}"
+    );
+}
