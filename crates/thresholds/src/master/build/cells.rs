@@ -246,7 +246,8 @@ pub fn extend_table(
     if let Some(first) = old_rows.first() {
         y1 = first.y - 0.5 * cfg.y_step;
     }
-    let n0 = ((y1 - y0) / cfg.y_step).floor().max(-1.0) as i64 + 1;
+    // rounding must not drop the last row: (5.5 - (-6)) / 0.5 is 23, not 22.999...
+    let n0 = ((y1 - y0) / cfg.y_step + 1e-9).floor().max(-1.0) as i64 + 1;
     let ys: Vec<f64> = (0..n0).map(|i| y0 + i as f64 * cfg.y_step).collect();
     let mut rows: Vec<RowData> = ys.par_iter().filter_map(|&y| row_at(y)).collect();
     let added = rows.len();
