@@ -35,6 +35,20 @@ fn assert_agree(t: &StickingThresholds, s: &StickingThresholds, what: &str) {
     );
 }
 
+/// The tables' answer at the synthetic point `(x, y)` of `k`, if they give one, once it is
+/// checked against the exact search there ([`assert_agree`]).
+fn checked_table_answer(x: f64, y: f64, k: f64) -> Option<StickingThresholds> {
+    let (c, t_vis) = thresholds::master::build::synthetic(x, y, 1.0).unwrap();
+    let law = CrackLaw::new(k).unwrap();
+    let t = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
+    if t.method != ThresholdMethod::Table {
+        return None;
+    }
+    let s = sticking_thresholds(&c, &law, t_vis, &SearchOptions::exact()).unwrap();
+    assert_agree(&t, &s, &format!("x = {x}, y = {y}, k = {k}"));
+    Some(t)
+}
+
 /// 80 points of the domain of the "Instant everywhere" issue: gamma_SV 0.01-0.3 J/m^2,
 /// E 0.5-200 GPa, nu 0.1-0.45, density 500-5000 kg/m^3, reduced radius 5 nm - 1 cm, two
 /// identical spheres or a wall, k over the tables' range (log-uniform 0.005-0.0504,
@@ -83,16 +97,8 @@ fn near_the_cliff_the_tables_agree_with_the_search() {
         let k = rng.answered_k();
         let Some(e) = ends.at(y, k) else { continue };
         let x = e.x_s + reach * (2.0 * rng.next() - 1.0);
-        let (c, t_vis) = thresholds::master::build::synthetic(x, y, 1.0).unwrap();
-        let law = CrackLaw::new(k).unwrap();
         n += 1;
-        let t = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
-        if t.method != ThresholdMethod::Table {
-            continue;
-        }
-        answered += 1;
-        let s = sticking_thresholds(&c, &law, t_vis, &SearchOptions::exact()).unwrap();
-        assert_agree(&t, &s, &format!("x = {x}, y = {y}, k = {k}"));
+        answered += usize::from(checked_table_answer(x, y, k).is_some());
     }
     assert!(n >= 30 && answered * 2 >= n, "answered {answered} of {n}");
 }
@@ -103,7 +109,6 @@ fn near_the_cliff_the_tables_agree_with_the_search() {
 /// answer.
 #[test]
 fn the_first_cells_agree_with_the_search() {
-    use thresholds::master::build::synthetic;
     let ends = MasterTables::standard()
         .ends()
         .expect("the end curves are embedded");
@@ -115,16 +120,8 @@ fn the_first_cells_agree_with_the_search() {
         let Some(e) = ends.at(y, k) else { continue };
         let x =
             e.x_s - 10f64.powf(-3.0 + 4.0 * rng.next()) * if rng.next() < 0.8 { 1.0 } else { -1.0 };
-        let (c, t_vis) = synthetic(x, y, 1.0).unwrap();
-        let law = CrackLaw::new(k).unwrap();
         n += 1;
-        let t = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
-        if t.method != ThresholdMethod::Table {
-            continue;
-        }
-        answered += 1;
-        let s = sticking_thresholds(&c, &law, t_vis, &SearchOptions::exact()).unwrap();
-        assert_agree(&t, &s, &format!("x = {x}, y = {y}, k = {k}"));
+        answered += usize::from(checked_table_answer(x, y, k).is_some());
     }
     // measured: 8 of 30; the tables decline the band at the cliff and, for k above 0.02, this
     // y (the tables of k = 0.04 and 0.0504 were not grown: their first cells are unchecked)
@@ -138,7 +135,7 @@ fn the_first_cells_agree_with_the_search() {
 /// bouncing beyond it either.
 #[test]
 fn next_to_the_kink_beyond_the_bound_nothing_bounces() {
-    use thresholds::master::build::{ends::x_s, synthetic, BuildConfig};
+    use thresholds::master::build::{ends::x_s, BuildConfig};
     let tables = MasterTables::standard();
     let ends = tables.ends().expect("the end curves are embedded");
     let cfg = BuildConfig::standard();
@@ -167,17 +164,14 @@ fn next_to_the_kink_beyond_the_bound_nothing_bounces() {
         // two points beyond the bound that the tables answer, against the search
         let mut here = 0;
         for &y in band.iter().rev() {
-            let bound = ends.upper_bound(y, k).unwrap();
-            let x = bound.x_on + 0.02;
-            let (c, t_vis) = synthetic(x, y, 1.0).unwrap();
-            let t = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
-            if t.method != ThresholdMethod::Table || here == 2 {
-                continue;
+            if here == 2 {
+                break;
             }
-            let s = sticking_thresholds(&c, &law, t_vis, &SearchOptions::exact()).unwrap();
-            assert_agree(&t, &s, &format!("x = {x}, y = {y}, k = {k}"));
-            assert_eq!(t.v_stick, None, "k = {k}, y = {y}: {t:?}");
-            here += 1;
+            let x = ends.upper_bound(y, k).unwrap().x_on + 0.02;
+            if let Some(t) = checked_table_answer(x, y, k) {
+                assert_eq!(t.v_stick, None, "k = {k}, y = {y}: {t:?}");
+                here += 1;
+            }
         }
         answered += here;
     }

@@ -112,7 +112,7 @@ impl BuildConfig {
     }
 }
 
-/// The channels' spacing in ln sigma and ln nu: 0.25.
+/// The channels' spacing in their coordinates (ln sigma + sigma, logit nu): 0.25.
 pub const CHANNEL_STEP: f64 = 0.25;
 
 /// The first channel of each side, sigma (nu) = 1e-4: closer to V_stick the tables decline and
@@ -411,7 +411,7 @@ pub fn build_table(
     let mut table = TableData {
         k,
         header: vec![
-            format!("restitution table: h = ln(|V_out|/V_stick) (V_out < 0 bouncing, > 0 double collisions), over x = log10 c_D, y = log10(c_D c_a), k = {k}, at channels sigma = ln(V_in/V_stick) (bouncing) and nu = ln(V_stick/V_in)/ln(F/F_on) (double collisions), evenly in ln sigma and ln nu; V_stick and V_on from the master tables"),
+            format!("restitution table: h = ln(|V_out|/V_stick) (V_out < 0 bouncing, > 0 double collisions), over x = log10 c_D, y = log10(c_D c_a), k = {k}, at channels sigma = ln(V_in/V_stick) (bouncing) and nu = ln(V_stick/V_in)/ln(F/F_on) (double collisions), evenly in ln sigma + sigma and logit nu; V_stick and V_on from the master tables"),
             format!("nodes: one collision at rtol {} per channel; cells checked at their centres against the ODE to {} in e", number(cfg.solver.rtol), number(cfg.tol_e)),
         ],
         sigma: cfg.sigma.clone(),

@@ -16,10 +16,10 @@
 //! (double collision) below it. |V_out| grows from 0 at V_stick, linearly in the distance to it
 //! where the contact dissipates and as its square root in the JKR limit, saturates far above
 //! it (e falls as 1/V_in near the cliff), and rises steeply, about as ln(1/(1 - nu)), towards
-//! the onset of double collisions: in h against ln sigma + sigma and against logit nu = ln(nu/(1 - nu))
-//! each of these is a straight stretch, and the change between them smooth, so the channels are
-//! spaced evenly in those coordinates ([`channel_coordinate`]) and the tables interpolate in them
-//! ([`Table`] holds them so).
+//! the onset of double collisions: in h against ln sigma + sigma and against logit nu =
+//! ln(nu/(1 - nu)) each of these is a straight stretch, and the change between them smooth, so
+//! the channels are spaced evenly in those coordinates ([`channel_coordinate`]) and the tables
+//! interpolate in them ([`Table`] holds them so).
 
 use crate::bytes::{self, Writer};
 
@@ -251,7 +251,7 @@ pub struct Row {
 pub struct Table {
     /// k.
     pub k: f64,
-    /// The bouncing channels' coordinates, ln sigma (interpolation is in these).
+    /// The bouncing channels' coordinates, ln sigma + sigma (interpolation is in these).
     pub sigma: Vec<f64>,
     /// The double-collision channels' coordinates, logit nu = ln(nu / (1 - nu)).
     pub nu: Vec<f64>,

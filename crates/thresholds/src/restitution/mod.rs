@@ -10,18 +10,19 @@
 //! ```text
 //! bouncing    V_in > V_stick:          sigma = ln(V_in / V_stick)                 in [1e-4, 9.5]
 //! double      V_on < V_in < V_stick:   nu = ln(V_stick / V_in) / ln(F / F_on)     in [1e-4, 0.999]
-//! h = ln(|V_out| / V_stick), channels evenly in ln sigma and logit nu = ln(nu / (1 - nu))
+//! h = ln(|V_out| / V_stick), channels evenly in ln sigma + sigma and logit nu = ln(nu/(1 - nu))
 //! ```
 //! (|V_out| grows linearly with the distance to V_stick where the contact dissipates, as its
 //! square root in the JKR limit, saturates far above V_stick and rises about as ln(1/(1 - nu))
-//! towards the onset: straight stretches in these coordinates), and below V_on every collision sticks (e = 0). The tables hold h at the
-//! channels on nodes of rows of constant y (in u = ln(x_s - x), as the master tables) for every
+//! towards the onset: straight stretches in these coordinates), and below V_on every collision
+//! sticks (e = 0). The tables hold h at the channels on nodes of rows of constant y (in u = ln(x_s - x), as the master tables) for every
 //! table k; an answer is the local cubic along the channels, along the row, across rows and
 //! across k. Each cell between two rows was checked at its centre against the ODE (e within
 //! 5e-5, half the 1e-4 promised), and each interval between tables of neighbouring k likewise;
 //! elsewhere (near the cliff, a double-collision window narrower than 1e-4 of V_stick, speeds
-//! beyond 9.5 e-folds above V_stick, within 1e-4 of V_stick in sigma or nu, within 1e-4 of the
-//! onset) the caller integrates the ODE.
+//! beyond 9.5 e-folds above V_stick, within 1e-5 of V_stick ([`STICK_MARGIN`]) or below the
+//! first channel (sigma or nu = 1e-4), within 1e-4 of the onset, within 0.05 in x of the cliff
+//! ([`CLIFF_MARGIN`])) the caller integrates the ODE.
 //!
 //! # Example
 //! ```
@@ -215,7 +216,7 @@ impl RestitutionTables {
         } else {
             Side::Double
         };
-        // h = ln(|V_out| / V_stick), interpolated in ln sigma (logit nu)
+        // h = ln(|V_out| / V_stick), interpolated in ln sigma + sigma (logit nu)
         let z = format::channel_coordinate(side == Side::Bouncing, coord);
         let h = self.h(x, y, k, side, z, true)?;
         Some(match side {
