@@ -1,4 +1,4 @@
-//! `cargo xtask master-table [--part ends|tables|kcheck] [--check]`: build the master tables of
+//! `cargo xtask master-table [--part ends|tables|kcheck|revouch] [--check]`: build the master tables of
 //! V_stick / V_stick,JKR with the exact search and write them to `crates/thresholds/data/`
 //! (`master_ends.csv`, the end curves and the checks between tables of neighbouring k;
 //! `master_k<k>.csv`, one table a k), or recompute a sample of their nodes and end points and
@@ -14,6 +14,7 @@ use thresholds::master::build::check::{
 };
 use thresholds::master::build::ends::{build_ends, repair_ends};
 use thresholds::master::build::kcheck::k_checks;
+use thresholds::master::build::revouch::revouch_table;
 use thresholds::master::build::BuildConfig;
 use thresholds::master::format::{parse_ends, parse_table, EndsData, TableData};
 use thresholds::master::{ends_to_text, table_to_text};
@@ -38,6 +39,8 @@ pub enum Part {
     Tables,
     /// The checks between tables of neighbouring k, into `master_ends.csv`.
     Kcheck,
+    /// The committed tables vouched closer to their ends (no new nodes; then `kcheck`).
+    Revouch,
 }
 
 /// The directory of the committed tables.
@@ -170,6 +173,25 @@ pub fn run_build(
             });
             let mut t = extend_table(&cfg, i, from, &ends, &progress)?;
             t.header.extend(kept);
+            t.header.splice(0..0, stamp.iter().cloned());
+            let path = table_path(root, t.k);
+            std::fs::write(&path, table_to_text(&t))?;
+            progress(&format!("wrote {}", path.display()));
+        }
+    }
+    if part == Part::Revouch {
+        let ends = committed_ends(root)?;
+        for t in committed_tables(root)? {
+            let i = cfg
+                .table_ks()
+                .iter()
+                .position(|k| (t.k / k - 1.0).abs() < 1e-9);
+            if !only.is_empty() && !i.is_some_and(|i| only.contains(&i)) {
+                continue;
+            }
+            let mut t = revouch_table(&cfg, &t, &ends, &progress)?;
+            t.header
+                .retain(|h| !h.starts_with("commit:") && !h.starts_with("command:"));
             t.header.splice(0..0, stamp.iter().cloned());
             let path = table_path(root, t.k);
             std::fs::write(&path, table_to_text(&t))?;

@@ -103,6 +103,47 @@ fn near_the_cliff_the_tables_agree_with_the_search() {
     assert!(n >= 30 && answered * 2 >= n, "answered {answered} of {n}");
 }
 
+/// Within 5e-4 of the cliff in x, where the tables vouched anew from their own nodes
+/// (`cargo xtask master-table --part revouch`) answer and the default search strays from the
+/// truth by up to 2e-5 (V_out is nearly flat in V_in there), the tables match the reference
+/// search (BDF at rtol 1e-11, brackets of 1e-9: `SearchOptions::reference()`) to 2e-6, the
+/// tolerance of the build's midpoint checks; k = 0.01, y from -3 to 1 (CO2 grains of 60 um lie
+/// at y = -0.6).
+#[test]
+fn close_to_the_cliff_the_tables_match_the_reference_search() {
+    let ends = MasterTables::standard()
+        .ends()
+        .expect("the end curves are embedded");
+    let law = CrackLaw::new(0.01).unwrap();
+    let mut rng = Rng(13);
+    let (mut compared, mut n) = (0, 0);
+    while n < 20 {
+        let y = -3.0 + 4.0 * rng.next();
+        let Some(e) = ends.at(y, law.k()) else {
+            continue;
+        };
+        n += 1;
+        let x = e.x_s - 10f64.powf(-5.0 + 1.7 * rng.next());
+        let (c, t_vis) = thresholds::master::build::synthetic(x, y, 1.0).unwrap();
+        let t = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
+        if t.method != ThresholdMethod::Table {
+            continue;
+        }
+        let r = sticking_thresholds(&c, &law, t_vis, &SearchOptions::reference()).unwrap();
+        let close = |a: Option<f64>, b: Option<f64>| match (a, b) {
+            (Some(a), Some(b)) => (a / b - 1.0).abs() < 2e-6,
+            (a, b) => a == b,
+        };
+        let what = format!("x = {x}, y = {y}: {t:?} vs {r:?}");
+        assert!(close(t.v_stick, r.v_stick), "{what}");
+        assert!(close(t.v_double_onset, r.v_double_onset), "{what}");
+        compared += 1;
+    }
+    // measured: 13 of 20 (the rest lie where the default search strays by more than 8e-6 and
+    // the tables leave the band to it); a floor under it
+    assert!(compared >= 10, "compared {compared} of {n}");
+}
+
 /// The first cells of the tables built from y = -4.5 (checked since with the four rows nearest,
 /// `cargo xtask master-table --extend`): random points with y from -4.5 to -4, k over the tables'
 /// range and x from 1e-3 to 10 below and beyond the cliff agree with the search where the tables

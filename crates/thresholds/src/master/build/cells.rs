@@ -40,7 +40,7 @@ pub const SHEARED_REACH: f64 = 2.0;
 
 /// The last check point that passed before the first that failed, in the order given: `all`
 /// when every one passed, `none` when the first failed.
-fn last_passing(checks: &[(f64, bool)], all: f64, none: f64) -> f64 {
+pub fn last_passing(checks: &[(f64, bool)], all: f64, none: f64) -> f64 {
     match checks.iter().position(|q| !q.1) {
         None => all,
         Some(0) => none,
@@ -70,25 +70,108 @@ fn checked(
         .collect()
 }
 
+/// The body (`strip` false) or the strip of a row.
+fn piece_of(r: &RowData, strip: bool) -> &PieceData {
+    if strip {
+        &r.strip
+    } else {
+        &r.body
+    }
+}
+
+/// What a cell check needs besides the rows: the build's settings, the crack law of the
+/// table's k, the nodes computed so far and the end curves.
+#[derive(Clone, Copy)]
+pub struct Checker<'a> {
+    /// The build's settings.
+    pub cfg: &'a BuildConfig,
+    /// The crack law of the table's k.
+    pub law: &'a CrackLaw,
+    /// The nodes computed so far.
+    pub cache: &'a Cache,
+    /// The end curves (the end at a cell's mid-y).
+    pub curves: &'a EndCurves,
+}
+
+/// The four rows whose cubic in y answers in the cell between `rows[j]` and `rows[j + 1]`
+/// (shifted inward at the ends), their y, and the cell's mid-y; `None` with fewer than four rows.
+fn cell_stencil(rows: &[RowData], j: usize) -> Option<(&[RowData], Vec<f64>, f64)> {
+    let s = stencil_start(j, rows.len());
+    let stencil = rows.get(s..s + 4)?;
+    let ys = stencil.iter().map(|r| r.y).collect();
+    Some((stencil, ys, 0.5 * (rows[j].y + rows[j + 1].y)))
+}
+
+/// The sheared check `c` (0: body F, 1: body F_on, 2: strip F_on) of the cell between
+/// `rows[j]` and `rows[j + 1]`: at the distances to the end of `rows[j]`'s nodes with u = ln d in
+/// `u_range` (and within [`SHEARED_REACH`] and every stencil row's nodes), in decreasing u, the
+/// cubic in y through the stencil's rows against the exact ratio at mid-y (at that distance
+/// to the end interpolated there). `None` where the end curves do not give the end at mid-y or
+/// a row of the stencil has fewer than two nodes.
+pub fn sheared_checks(
+    on: &Checker,
+    rows: &[RowData],
+    j: usize,
+    c: usize,
+    u_range: (f64, f64),
+) -> Option<Vec<(f64, bool)>> {
+    let Checker {
+        cfg,
+        law,
+        cache,
+        curves,
+    } = *on;
+    let (stencil, ys, y_mid) = cell_stencil(rows, j)?;
+    let e = curves.at(y_mid, law.k())?;
+    let (strip, v) = (c == 2, usize::from(c != 0));
+    let end = |r: &RowData| if strip { r.x_on } else { r.x_s };
+    let end_mid = if strip { e.x_on } else { e.x_s };
+    if stencil.iter().any(|r| piece_of(r, strip).x.len() < 2) {
+        return None;
+    }
+    let of_rows: Vec<(Vec<f64>, Vec<f64>)> = stencil
+        .iter()
+        .map(|r| curve(piece_of(r, strip), end(r), v))
+        .collect();
+    let hi = of_rows
+        .iter()
+        .map(|(u, _)| u[u.len() - 1])
+        .fold(SHEARED_REACH.ln(), f64::min)
+        .min(u_range.1);
+    let mut us: Vec<f64> = curve(piece_of(&rows[j], strip), end(&rows[j]), v)
+        .0
+        .into_iter()
+        .filter(|&u| u >= u_range.0 && u <= hi)
+        .collect();
+    us.sort_by(|a, b| b.total_cmp(a));
+    let exact = |u: f64| {
+        let p = cache.node(cfg, law, end_mid - u.exp(), y_mid);
+        if v == 0 {
+            p.stick()
+        } else {
+            p.onset()
+        }
+    };
+    Some(checked(
+        us,
+        &ys,
+        y_mid,
+        cfg.tol,
+        |q, u| local_cubic(&of_rows[q].0, &of_rows[q].1, u),
+        exact,
+    ))
+}
+
 /// The limits of the cell between `rows[j]` and `rows[j + 1]` (checked at mid-y: in plain x at
 /// the nodes of both rows, and at a fixed distance to the end interpolated there), and whether
 /// every check inside the rows' vouched ranges passed (else a row is added in the middle).
-fn check_cell(
-    cfg: &BuildConfig,
-    law: &CrackLaw,
-    cache: &Cache,
-    curves: &EndCurves,
-    rows: &[RowData],
-    j: usize,
-) -> (CellData, bool) {
-    let n = rows.len();
-    let s = stencil_start(j, n);
-    let stencil = &rows[s..(s + 4).min(n)];
-    if stencil.len() < 4 {
+fn check_cell(on: &Checker, rows: &[RowData], j: usize) -> (CellData, bool) {
+    let Checker {
+        cfg, law, cache, ..
+    } = *on;
+    let Some((stencil, ys, y_mid)) = cell_stencil(rows, j) else {
         return (CellData::NONE, false);
-    }
-    let ys: Vec<f64> = stencil.iter().map(|r| r.y).collect();
-    let y_mid = 0.5 * (rows[j].y + rows[j + 1].y);
+    };
     let mut cell = CellData::NONE;
     let mut ok = true;
     let exact = |x: f64, y: f64, v: usize| {
@@ -143,47 +226,14 @@ fn check_cell(
             .all(|q| q.1 || q.0 > x_s_min - SHEARED_REACH / 2.0);
     }
     // at a fixed distance to the end, where the end curves vouch for the end at mid-y
-    let Some(e) = curves.at(y_mid, law.k()) else {
-        return (cell, ok);
-    };
-    for (c, strip, v) in [(0, false, 0), (1, false, 1), (2, true, 1)] {
-        fn piece_of(r: &RowData, strip: bool) -> &PieceData {
-            if strip {
-                &r.strip
-            } else {
-                &r.body
-            }
-        }
-        let piece = |r| piece_of(r, strip);
-        let end = |r: &RowData| if strip { r.x_on } else { r.x_s };
-        let end_mid = if strip { e.x_on } else { e.x_s };
-        if stencil.iter().any(|r| piece(r).x.len() < 2) {
-            continue;
-        }
-        let of_rows: Vec<(Vec<f64>, Vec<f64>)> =
-            stencil.iter().map(|r| curve(piece(r), end(r), v)).collect();
+    for c in 0..3 {
         let lo = stencil
             .iter()
-            .map(|r| piece(r).d_lo[v].ln())
+            .map(|r| piece_of(r, c == 2).d_lo[usize::from(c != 0)].ln())
             .fold(f64::NEG_INFINITY, f64::max);
-        let hi = of_rows
-            .iter()
-            .map(|(u, _)| u[u.len() - 1])
-            .fold(SHEARED_REACH.ln(), f64::min);
-        let mut us: Vec<f64> = curve(piece(&rows[j]), end(&rows[j]), v)
-            .0
-            .into_iter()
-            .filter(|&u| u >= lo && u <= hi)
-            .collect();
-        us.sort_by(|a, b| b.total_cmp(a));
-        let checks = checked(
-            us,
-            &ys,
-            y_mid,
-            cfg.tol,
-            |q, u| local_cubic(&of_rows[q].0, &of_rows[q].1, u),
-            |u| exact(end_mid - u.exp(), y_mid, v),
-        );
+        let Some(checks) = sheared_checks(on, rows, j, c, (lo, f64::INFINITY)) else {
+            continue;
+        };
         let all = if lo.is_finite() { lo } else { f64::INFINITY };
         cell.d_lo[c] = last_passing(&checks, all, f64::INFINITY).exp();
         ok &= checks.iter().all(|q| q.1);
@@ -277,9 +327,11 @@ pub fn extend_table(
             cfg.z_clamp
         ),
         format!(
-            "interpolation: local cubics of ln(ratio - 1) in u = ln(x_s - x) (body) and w = ln(x_on - x) (strip), then in y in plain x (cell x_hi) or at a fixed distance to the end (cell d_lo); every midpoint checked to {}; the default search agrees with every vouched node to {}",
+            "interpolation: local cubics of ln(ratio - 1) in u = ln(x_s - x) (body) and w = ln(x_on - x) (strip), then in y in plain x (cell x_hi) or at a fixed distance to the end (cell d_lo); every midpoint checked to {}; the default search agrees with every vouched node to {} (ratios up to {}; {} above)",
             number(cfg.tol),
-            number(cfg.agree)
+            number(cfg.agree),
+            number(cfg.agree_up_to),
+            number(cfg.agree_beyond)
         ),
         format!(
             "domain: x from {}, y in [{}, {}]; d_lo: vouched where the distance to the end is at least this",
@@ -313,6 +365,12 @@ fn refine(
     row_at: &(dyn Fn(f64) -> Option<RowData> + Sync),
     progress: &(dyn Fn(&str) + Sync),
 ) {
+    let on = Checker {
+        cfg,
+        law,
+        cache,
+        curves,
+    };
     let k = law.k();
     loop {
         let unchecked: Vec<usize> = (0..cells.len()).filter(|&j| cells[j].is_none()).collect();
@@ -321,7 +379,7 @@ fn refine(
         }
         let mut split = Vec::new();
         for &j in &unchecked {
-            let (cell, ok) = check_cell(cfg, law, cache, curves, rows, j);
+            let (cell, ok) = check_cell(&on, rows, j);
             let can_split = rows[j + 1].y - rows[j].y > cfg.min_y_step * 1.5;
             if ok || !can_split {
                 cells[j] = Some(cell);

@@ -26,6 +26,7 @@ pub mod cells;
 pub mod check;
 pub mod ends;
 pub mod kcheck;
+pub mod revouch;
 pub mod row;
 
 use super::format::F_TOP;
@@ -47,10 +48,26 @@ pub struct BuildConfig {
     /// The largest interpolation error a check accepts, relative to the ratio: 2e-6, a fifth of
     /// the 1e-5 the tables promise, for the error between checks and of the k interpolation.
     pub tol: f64,
-    /// The default search must agree with a node to this (relative): 4e-6. Near the cliff the
-    /// default search's own error grows (V_out is nearly flat in V_in there); where it exceeds
-    /// this, the tables stop vouching and the search answers (the band at the ends).
+    /// The default search must agree with a node to this (relative) where the node's ratio is
+    /// at most [`BuildConfig::agree_up_to`]: 8e-6, so that with the interpolation's
+    /// [`BuildConfig::tol`] the tables stay within the 1e-5 they promise against it. Near the
+    /// cliff the default search's own error grows (V_out is nearly flat in V_in there: up to
+    /// 5.4e-6 from the reference search 1e-4 to 1e-3 in x from x_s, where the rows are within
+    /// 1.3e-6 of it, and up to 7.4e-6 from the nodes at F of 900-1000; [`revouch`]); where it
+    /// exceeds this, the tables stop vouching and the search answers (the band at the ends).
+    /// The tables built before `revouch` used 4e-6.
     pub agree: f64,
+    /// The largest ratio held to [`BuildConfig::agree`]: 1000, the default search limit
+    /// ([`crate::DEFAULT_V_MAX_OVER_JKR`]), beyond which a default search says "no bouncing
+    /// below v_max" and the tables' verdict is all it is compared on.
+    pub agree_up_to: f64,
+    /// Above [`BuildConfig::agree_up_to`] the default search must agree with a node to this
+    /// only: 1e-4. There (F of 1000 to 2200 within 1e-4 of the cliff, CO2-like rows) the
+    /// default search scatters by up to 3.5e-5 around the nodes while the rows' midpoints lie
+    /// within 1e-6 of new nodes: the scatter is the default search's, and the tables are held
+    /// to the nodes (the search at rel_tol 1e-8, collisions at rtol 1e-10); the looser check
+    /// still catches a default search that found another root.
+    pub agree_beyond: f64,
     /// Nodes with both ratios below this are not compared with the default search: there (far
     /// from the cliff) the two agree to 1e-7 (`docs/performance.md`, "Accuracy").
     pub agree_from: f64,
@@ -97,7 +114,9 @@ impl BuildConfig {
                 ..SearchOptions::default_solver()
             },
             tol: 2e-6,
-            agree: 4e-6,
+            agree: 8e-6,
+            agree_up_to: crate::DEFAULT_V_MAX_OVER_JKR,
+            agree_beyond: 1e-4,
             agree_from: 5.0,
             x_min: -17.0,
             x_step: 0.5,
@@ -265,6 +284,18 @@ impl Cache {
         }
         p
     }
+}
+
+/// Whether the default search's ratio `theirs` agrees with a node's `ours`: to
+/// [`BuildConfig::agree`] up to [`BuildConfig::agree_up_to`], to [`BuildConfig::agree_beyond`]
+/// above it.
+pub fn agrees(cfg: &BuildConfig, theirs: Option<f64>, ours: f64) -> bool {
+    let tol = if ours <= cfg.agree_up_to {
+        cfg.agree
+    } else {
+        cfg.agree_beyond
+    };
+    rel_diff(theirs, Some(ours)) <= tol
 }
 
 /// The relative difference of two ratios (infinite when either is missing).

@@ -3,7 +3,7 @@
 //! every interval's midpoint, and vouched for only where it does and the default search agrees
 //! with the nodes.
 
-use super::{default_search, rel_diff, search, BuildConfig, Cache, Point};
+use super::{agrees, default_search, rel_diff, search, BuildConfig, Cache, Point};
 use crate::master::format::{PieceData, RowData, F_TOP};
 use crate::master::interp::local_cubic;
 use crate::SearchOptions;
@@ -139,7 +139,7 @@ fn piece(
         }
         let d = default_search(cfg, law, x, y);
         for (v, theirs) in [(0, d.stick()), (1, d.onset())] {
-            if x <= x_hi[v] && rel_diff(theirs, Some(r[v])) > cfg.agree {
+            if x <= x_hi[v] && !agrees(cfg, theirs, r[v]) {
                 x_hi[v] = if i == 0 {
                     f64::NEG_INFINITY
                 } else {
