@@ -154,10 +154,12 @@ def resume(sim, path: Path, settings: dict) -> float:
     return float(saved["seconds"])
 
 
-#: Checkpoint spacing (yr) after the first 5e3 years: about 5 minutes of a core for a
-#: grain-physics run at 50 radial cells once bodies pass St = 1 (time steps of 3 yr, 0.35 s
-#: each), what a kill can cost a run that goes on over several sittings.
-CHECKPOINT_YEARS = 2.5e3
+#: Checkpoint spacing (yr) after the first 5e3 years: what a kill (the end of a sitting) can cost a
+#: run that goes on over several sittings. 2.5e3 years was about 5 minutes of a core early on
+#: (time steps of 3 yr, 0.35 s each); past 4e4 years the grain-physics runs' steps fall below a
+#: year and 2.5e3 years took 45 minutes of wall time with four runs on two cores, so every
+#: 500 years (about ten minutes there; a checkpoint costs milliseconds).
+CHECKPOINT_YEARS = 500.0
 
 
 def milestones(years: float) -> list:

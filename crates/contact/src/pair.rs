@@ -295,14 +295,18 @@ impl Contact {
     /// R1 (`radius`) or a different R2 (`radius2`) outside [`PLAUSIBLE_RADIUS`], a Tabor
     /// parameter below [`TABOR_MIN`].
     pub fn warnings(&self) -> Vec<Warning> {
-        let tabor = self.tabor();
         let r2 = self.geometry.r2().filter(|&r2| r2 != self.r1());
         let mut out: Vec<Warning> = Warning::for_radius("radius", self.r1())
             .into_iter()
             .chain(r2.and_then(|r2| Warning::for_radius("radius2", r2)))
             .collect();
-        if tabor < TABOR_MIN {
-            out.push(Warning::JkrOutsideValidity { tabor });
+        // mu < TABOR_MIN tested as mu^3 eps^3 = R gamma^2 / E*^2 < (TABOR_MIN eps)^3: without
+        // the cube root, which an array of a million contacts from Python would pay each time
+        let (g, e) = (self.gamma(), self.e_star());
+        if self.reduced_radius() * g * g / (e * e) < (TABOR_MIN * self.epsilon).powi(3) {
+            out.push(Warning::JkrOutsideValidity {
+                tabor: self.tabor(),
+            });
         }
         out
     }

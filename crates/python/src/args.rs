@@ -16,12 +16,43 @@ use thresholds::{
     Warning,
 };
 
-pub type Array<'py> = PyReadonlyArray1<'py, f64>;
+/// A flat number argument: a contiguous float64 array, or one Python float. A call whose
+/// arguments are all floats (the package's scalar calls) makes no array on either side: its
+/// [`columns`] are floats too, which saves a scalar call a third of its cost.
+pub enum Array<'py> {
+    /// One Python float: an array of one element.
+    One(f64),
+    /// A flat float64 array.
+    Many(PyReadonlyArray1<'py, f64>),
+}
 
-/// The contiguous data of a flat array argument.
+impl<'a, 'py> FromPyObject<'a, 'py> for Array<'py> {
+    type Error = PyErr;
+
+    fn extract(obj: pyo3::Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        // exactly a float: a 1-element array also converts to float, and must stay an array
+        if let Ok(f) = obj.cast_exact::<pyo3::types::PyFloat>() {
+            return Ok(Self::One(f.value()));
+        }
+        Ok(Self::Many(obj.extract()?))
+    }
+}
+
+impl Array<'_> {
+    /// Whether this is one float (not an array).
+    pub fn is_one(&self) -> bool {
+        matches!(self, Self::One(_))
+    }
+}
+
+/// The contiguous data of a flat array argument (one element for a float).
 pub fn data<'a>(a: &'a Array<'_>, name: &str) -> PyResult<&'a [f64]> {
-    a.as_slice()
-        .map_err(|_| PyValueError::new_err(format!("{name}: expected a contiguous float64 array")))
+    match a {
+        Array::One(x) => Ok(std::slice::from_ref(x)),
+        Array::Many(a) => a.as_slice().map_err(|_| {
+            PyValueError::new_err(format!("{name}: expected a contiguous float64 array"))
+        }),
+    }
 }
 
 /// The common length of the flat arguments (the package broadcasts them first).
@@ -51,11 +82,13 @@ pub struct Elements<'a> {
     laws: Laws,
     /// The common length.
     pub n: usize,
+    /// Whether every argument was one float: the result is then a dict of floats.
+    pub scalar: bool,
 }
 
 impl<'a> Elements<'a> {
     /// The elements of a call; `own` are the function's other arrays, by name, for the length
-    /// check.
+    /// check, and `own_scalar` whether each of them was one float.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
         material: &'a Material,
@@ -65,7 +98,11 @@ impl<'a> Elements<'a> {
         wall: bool,
         k: Option<&'a Array<'_>>,
         own: &[(&str, &'a [f64])],
+        own_scalar: bool,
     ) -> PyResult<Self> {
+        let scalar = own_scalar
+            && radius.is_one()
+            && [radius2, gamma_sv, k].iter().flatten().all(|a| a.is_one());
         let radius = data(radius, "radius")?;
         let radius2 = radius2.map(|r| data(r, "radius2")).transpose()?;
         let gamma_sv = gamma_sv.map(|g| data(g, "gamma_sv")).transpose()?;
@@ -87,6 +124,7 @@ impl<'a> Elements<'a> {
             k,
             laws: Laws::new(k),
             n,
+            scalar,
         })
     }
 
@@ -147,8 +185,13 @@ thread_local! {
         const { std::cell::Cell::new(None) };
 }
 
-/// One `CrackLaw` per distinct k (each table takes 0.17 ms to build and is shared).
-pub struct Laws(HashMap<u64, Result<CrackLaw, OutOfRange>>);
+/// One `CrackLaw` per distinct k (each table takes 0.17 ms to build and is shared), and that of
+/// the first element's k apart: most calls have one k, and comparing its bits is cheaper than
+/// hashing them for every element.
+pub struct Laws {
+    by_bits: HashMap<u64, Result<CrackLaw, OutOfRange>>,
+    first: Option<(u64, Result<CrackLaw, OutOfRange>)>,
+}
 
 /// Crack laws kept across calls: a call of a few elements (a sampler's step asks V_stick of 8
 /// walkers thousands of times) would otherwise spend 0.2 ms building its law, 100 times the
@@ -184,15 +227,29 @@ fn law(k: f64) -> Result<CrackLaw, OutOfRange> {
 
 impl Laws {
     pub fn new(k: &[f64]) -> Self {
-        let mut map = HashMap::new();
+        let mut by_bits = HashMap::new();
+        let mut last = None;
         for &x in k {
-            map.entry(x.to_bits()).or_insert_with(|| law(x));
+            // runs of one k (the common case: a scalar k broadcast) are hashed once
+            if last != Some(x.to_bits()) {
+                last = Some(x.to_bits());
+                by_bits.entry(x.to_bits()).or_insert_with(|| law(x));
+            }
         }
-        Self(map)
+        let first = k.first().and_then(|x| {
+            let bits = x.to_bits();
+            Some((bits, by_bits.get(&bits)?.clone()))
+        });
+        Self { by_bits, first }
     }
 
     pub fn get(&self, k: f64, i: usize) -> Result<&CrackLaw, Error> {
-        match self.0.get(&k.to_bits()) {
+        let bits = k.to_bits();
+        let found = match &self.first {
+            Some((b, law)) if *b == bits => Some(law),
+            _ => self.by_bits.get(&bits),
+        };
+        match found {
             Some(Ok(law)) => Ok(law),
             Some(Err(bad)) => Err(Error::Input {
                 bad: bad.clone(),
@@ -224,22 +281,66 @@ pub fn warned(i: usize, warnings: impl IntoIterator<Item = Warning>) -> Warned {
         .collect()
 }
 
+/// One element's row of a result: its f64 columns and, for the functions that say which
+/// method answered, that method's code ([`method_code`]).
+pub trait Row<const N: usize> {
+    /// Whether the rows carry a method code (then the dict has a `"method"` column).
+    const HAS_METHOD: bool;
+    /// The f64 columns.
+    fn values(&self) -> &[f64; N];
+    /// The method code (0 where the rows carry none).
+    fn method(&self) -> u8;
+}
+
+impl<const N: usize> Row<N> for [f64; N] {
+    const HAS_METHOD: bool = false;
+    fn values(&self) -> &[f64; N] {
+        self
+    }
+    fn method(&self) -> u8 {
+        0
+    }
+}
+
+impl<const N: usize> Row<N> for ([f64; N], u8) {
+    const HAS_METHOD: bool = true;
+    fn values(&self) -> &[f64; N] {
+        &self.0
+    }
+    fn method(&self) -> u8 {
+        self.1
+    }
+}
+
 /// Columns of f64 results, the `"method"` column (the code of the method that answered each
-/// element, if the function says), and the warnings, as a dict of flat arrays.
-pub fn columns<'py, const N: usize>(
+/// element, where the rows carry it), and the warnings, as a dict of flat arrays.
+pub fn columns<'py, const N: usize, R: Row<N>>(
     py: Python<'py>,
     names: [&str; N],
-    rows: &[([f64; N], Warned)],
-    methods: Option<&[ThresholdMethod]>,
+    rows: &[(R, Warned)],
+    scalar: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let dict = PyDict::new(py);
-    for (j, name) in names.iter().enumerate() {
-        let col: Vec<f64> = rows.iter().map(|r| r.0[j]).collect();
-        dict.set_item(*name, PyArray1::from_vec(py, col))?;
-    }
-    if let Some(methods) = methods {
-        let codes: Vec<u8> = methods.iter().map(|&m| method_code(m)).collect();
-        dict.set_item("method", PyArray1::from_vec(py, codes))?;
+    match rows {
+        // a call of floats: floats (and an int method code), no arrays
+        [(row, _)] if scalar => {
+            for (name, v) in names.iter().zip(row.values()) {
+                dict.set_item(*name, *v)?;
+            }
+            if R::HAS_METHOD {
+                dict.set_item("method", row.method())?;
+            }
+        }
+        _ => {
+            for (j, name) in names.iter().enumerate() {
+                let col: Vec<f64> = rows.iter().map(|r| r.0.values()[j]).collect();
+                dict.set_item(*name, PyArray1::from_vec(py, col))?;
+            }
+            if R::HAS_METHOD {
+                let codes: Vec<u8> = rows.iter().map(|r| r.0.method()).collect();
+                dict.set_item("method", PyArray1::from_vec(py, codes))?;
+            }
+        }
     }
     let warnings: Warned = rows.iter().flat_map(|r| r.1.iter().cloned()).collect();
     dict.set_item("warnings", warnings)?;
@@ -334,6 +435,7 @@ macro_rules! elementwise {
             $($opt: $ty,)*
             $($gamma: Option<$crate::args::Array<'py>>,)?
         ) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
+            let own_scalar = true $(&& $own.is_one())*;
             $(let $own = $crate::args::data(&$own, stringify!($own))?;)*
             let $e = $crate::args::Elements::new(
                 &material,
@@ -343,6 +445,7 @@ macro_rules! elementwise {
                 wall,
                 None $(.or(Some(&$k)))?,
                 &[$((stringify!($own), $own)),*],
+                own_scalar,
             )?;
             $body
         }

@@ -37,7 +37,7 @@ elementwise! {
     /// v_stick_jkr (m/s).
     fn jkr(py, e: Elements[;;]) {
         let rows = e.map(py, |_, c| Ok((c.jkr_values(), Vec::new())))?;
-        columns(py, thresholds::JKR_QUANTITIES.map(|q| q.0), &rows, None)
+        columns(py, thresholds::JKR_QUANTITIES.map(|q| q.0), &rows, e.scalar)
     }
 }
 
@@ -50,7 +50,7 @@ elementwise! {
             let d = c.dimensionless(t_vis[i]);
             Ok(([d.c_d, d.c_a, c.t0()], Vec::new()))
         })?;
-        columns(py, ["c_d", "c_a", "t0"], &rows, None)
+        columns(py, ["c_d", "c_a", "t0"], &rows, e.scalar)
     }
 }
 

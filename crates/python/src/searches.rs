@@ -2,7 +2,7 @@
 //! each element answered by the master tables or the exact search (`method`), with a
 //! `"method"` column saying which answered (0: search, 1: table).
 
-use crate::args::{columns, elementwise, or_nan, Elements, Warned};
+use crate::args::{columns, elementwise, method_code, or_nan, Elements, Warned};
 use crate::error::Error;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -40,7 +40,9 @@ impl Answer for TVisFit {
 type Column<T> = (&'static str, fn(&T) -> Option<f64>);
 
 /// The elements of a threshold function: element `i` answers `f(i, contact, law)` (with its
-/// warnings); a dict of the `columns`, `"method"` and `"warnings"`.
+/// warnings); a dict of the `columns`, `"method"` and `"warnings"`. Each element's answer is
+/// reduced to its row of columns and method code where it is computed, so that a million
+/// elements from the tables move 41 bytes each, not the whole answer.
 fn per_element<'py, T: Answer, const N: usize>(
     py: Python<'py>,
     e: &Elements<'_>,
@@ -48,14 +50,11 @@ fn per_element<'py, T: Answer, const N: usize>(
     f: impl Fn(usize, &Contact, &CrackLaw) -> Result<(T, Warned), ThresholdsError> + Sync + Send,
 ) -> PyResult<Bound<'py, PyDict>> {
     let rows = e.map(py, |i, c| {
-        f(i, c, e.law(i)?).map_err(|err| Error::from_thresholds(err, i))
+        let (answer, w) = f(i, c, e.law(i)?).map_err(|err| Error::from_thresholds(err, i))?;
+        let row = cols.map(|c| or_nan(c.1(&answer)));
+        Ok(((row, method_code(answer.method())), w))
     })?;
-    let methods: Vec<ThresholdMethod> = rows.iter().map(|r| r.0.method()).collect();
-    let values: Vec<([f64; N], Warned)> = rows
-        .into_iter()
-        .map(|(answer, w)| (cols.map(|c| or_nan(c.1(&answer))), w))
-        .collect();
-    columns(py, cols.map(|c| c.0), &values, Some(&methods))
+    columns(py, cols.map(|c| c.0), &rows, e.scalar)
 }
 
 /// The columns of [`v_stick`].

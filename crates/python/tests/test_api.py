@@ -166,6 +166,28 @@ def test_core_refuses_arrays_of_other_lengths():
         _core.jkr(CO2, one, two, False)
 
 
+def test_the_core_answers_floats_with_floats_and_arrays_with_arrays():
+    # a call of floats (the package's scalar calls) makes no arrays; the numbers are those of
+    # the same call with arrays of one element, bit for bit, and a 1-element array stays one
+    from stickiness import _core
+
+    args = (CO2, 60e-6, None, False, 1e-9, 0.01, None, 1e-6, "table")
+    arrays = (CO2, np.array([60e-6]), None, False, np.array([1e-9]), np.array([0.01]),
+              None, 1e-6, "table")
+    floats, ones = _core.v_stick(*args), _core.v_stick(*arrays)
+    assert type(floats["v_stick"]) is float and type(floats["method"]) is int
+    assert isinstance(ones["v_stick"], np.ndarray) and ones["v_stick"].shape == (1,)
+    for key in ("v_stick", "v_double_onset", "v_stick_jkr", "v_max"):
+        assert floats[key] == ones[key][0], key
+    assert floats["method"] == ones["method"][0] == 1
+    # one array among floats: arrays out
+    mixed = _core.v_stick(CO2, np.array([60e-6]), None, False, 1e-9, 0.01, None, 1e-6, "table")
+    assert mixed["v_stick"].shape == (1,)
+    j = _core.jkr(CO2, 60e-6, None, False)
+    one = _core.jkr(CO2, np.array([60e-6]), None, False)
+    assert type(j["a_eq"]) is float and j["a_eq"] == one["a_eq"][0]
+
+
 def test_version():
     assert isinstance(st.__version__, str) and st.__version__.count(".") == 2
 

@@ -7,6 +7,7 @@ here computes physics.
 
 from __future__ import annotations
 
+import math
 import sys
 import warnings
 from typing import Any, Dict, Iterator, List, Optional, Sequence, Tuple, Union
@@ -208,13 +209,12 @@ class Broadcast:
 
     def __init__(self, **args: Any) -> None:
         if all(type(v) is float or (v is None and k in OPTIONAL) for k, v in args.items()):
-            # the common scalar call (floats only): one-element arrays, nothing to check or
-            # broadcast (a third of a scalar call's overhead otherwise)
+            # the common scalar call (floats only): the floats themselves, which the core
+            # takes as one element each and answers with floats; nothing to check or broadcast
+            # (two thirds of a scalar call's overhead otherwise)
             self.shapes: Dict[str, Tuple[int, ...]] = {k: () for k, v in args.items() if v is not None}
             self.shape: Tuple[int, ...] = ()
-            self.flat: Dict[str, np.ndarray] = {
-                k: np.array([v]) for k, v in args.items() if v is not None
-            }
+            self.flat: Dict[str, Any] = {k: v for k, v in args.items() if v is not None}
             self.scalar = True
             return
         arrays: Dict[str, np.ndarray] = {}
@@ -226,11 +226,17 @@ class Broadcast:
             arrays[k] = float_array(k, v)
         self.shapes = {k: a.shape for k, a in arrays.items()}
         distinct = set(self.shapes.values())
-        if len(distinct) <= 1:
-            # one shape (all scalars, or arrays alike): nothing to broadcast
-            self.shape = distinct.pop() if distinct else ()
+        shaped = distinct - {()}
+        if len(shaped) <= 1:
+            # one shape (all scalars, or arrays alike) besides scalars: the scalars filled to
+            # its size, nothing else to broadcast (np.broadcast_shapes and broadcast_to cost
+            # more than an array of 64 answers from the tables)
+            self.shape = shaped.pop() if shaped else ()
+            size = math.prod(self.shape)
             self.flat = {
-                k: np.ascontiguousarray(a).reshape(-1) for k, a in arrays.items()
+                k: (np.ascontiguousarray(a).reshape(-1) if a.shape or not self.shape
+                    else np.full(size, a[()]))
+                for k, a in arrays.items()
             }
         else:
             try:
@@ -248,12 +254,13 @@ class Broadcast:
 
     @property
     def size(self) -> int:
-        return int(np.prod(self.shape)) if self.shape else 1
+        return math.prod(self.shape)
 
     def out(self, flat: Any) -> Any:
         """A flat result as a Python scalar (scalar inputs) or an array of the broadcast shape."""
         if self.scalar:
-            return flat.item(0) if type(flat) is np.ndarray else flat[0]
+            kind = type(flat)
+            return flat if kind is float else flat.item(0) if kind is np.ndarray else flat[0]
         return np.asarray(flat).reshape(self.shape)
 
     def methods(self, codes: Any) -> Any:
@@ -263,7 +270,7 @@ class Broadcast:
     def names(self, names: Sequence[str], codes: Any) -> Any:
         """Codes (indices into ``names``) as a string, or an array of them."""
         if self.scalar:
-            return names[int(codes[0])]
+            return names[codes if type(codes) is int else int(codes[0])]
         return np.array(names)[np.asarray(codes, dtype=np.intp)].reshape(self.shape)
 
     def name_at(self, field: str, flat: int) -> str:

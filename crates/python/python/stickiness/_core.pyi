@@ -2,8 +2,10 @@
 
 Every vectorised function takes flat float64 arrays of one length (the broadcast arguments) and
 returns flat arrays (NaN where a value does not exist) with a ``"warnings"`` list of
-``(index, kind, message)``; ``crack_speed`` and ``t_vis_law`` return a bare array. All quantities
-are SI.
+``(index, kind, message)``; ``crack_speed`` and ``t_vis_law`` return a bare array. A number
+argument may also be one Python float (an array of one element); a call of ``jkr``,
+``dimensionless``, ``v_stick``, ``v_frag`` or ``fit_t_vis`` whose number arguments are all floats
+returns floats (and an int ``method``) instead of arrays. All quantities are SI.
 """
 
 from os import PathLike
@@ -46,6 +48,12 @@ T_VIS_EXPONENT: float
 SWEEP_COLUMNS: List[str]
 
 _F = npt.NDArray[np.float64]
+#: A number argument: a flat float64 array, or one float (an array of one element).
+_N = Union[float, _F]
+#: A column of a result: an array, or a float when every number argument was a float.
+_C = Union[float, _F]
+#: A "method" column likewise (an int for a call of floats).
+_M = Union[int, npt.NDArray[np.uint8]]
 _Warnings = List[Tuple[int, str, str]]
 
 class SolverError(RuntimeError):
@@ -95,22 +103,22 @@ class Material:
 class JkrColumns(TypedDict):
     """The columns of :func:`jkr` (flat arrays, SI)."""
 
-    a_eq: _F  # equilibrium contact radius (m)
-    delta_eq: _F  # equilibrium mutual approach (m)
-    tabor: _F  # Tabor parameter (dimensionless)
-    f_crit: _F  # pull-off force (N)
-    delta_crit: _F  # critical pulling length (m)
-    e_stick: _F  # E_stick,JKR (J)
-    e_break: _F  # E_break,JKR (J)
-    v_stick_jkr: _F  # V_stick,JKR (m/s)
+    a_eq: _C  # equilibrium contact radius (m)
+    delta_eq: _C  # equilibrium mutual approach (m)
+    tabor: _C  # Tabor parameter (dimensionless)
+    f_crit: _C  # pull-off force (N)
+    delta_crit: _C  # critical pulling length (m)
+    e_stick: _C  # E_stick,JKR (J)
+    e_break: _C  # E_break,JKR (J)
+    v_stick_jkr: _C  # V_stick,JKR (m/s)
     warnings: _Warnings
 
 class DimensionlessColumns(TypedDict):
     """The columns of :func:`dimensionless` (flat arrays)."""
 
-    c_d: _F  # drag number c_D (dimensionless)
-    c_a: _F  # crack-speed number c_a (dimensionless)
-    t0: _F  # JKR time unit (s)
+    c_d: _C  # drag number c_D (dimensionless)
+    c_a: _C  # crack-speed number c_a (dimensionless)
+    t0: _C  # JKR time unit (s)
     warnings: _Warnings
 
 class CollisionColumns(TypedDict, total=False):
@@ -130,97 +138,97 @@ class CollisionColumns(TypedDict, total=False):
 class VStickColumns(TypedDict):
     """The columns of :func:`v_stick` (flat, m/s; NaN where none)."""
 
-    v_stick: _F  # V_stick (m/s)
-    v_double_onset: _F  # V_double_onset (m/s)
-    v_stick_jkr: _F  # V_stick,JKR (m/s)
-    no_bouncing_below: _F  # the search limit without bouncing (m/s)
-    v_max: _F  # the highest speed searched (m/s)
-    method: npt.NDArray[np.uint8]  # 0: the search answered, 1: the table
+    v_stick: _C  # V_stick (m/s)
+    v_double_onset: _C  # V_double_onset (m/s)
+    v_stick_jkr: _C  # V_stick,JKR (m/s)
+    no_bouncing_below: _C  # the search limit without bouncing (m/s)
+    v_max: _C  # the highest speed searched (m/s)
+    method: _M  # 0: the search answered, 1: the table
     warnings: _Warnings
 
 class VFragColumns(TypedDict):
     """The columns of :func:`v_frag` (flat; NaN where none)."""
 
-    v_frag: _F  # V_frag = 10 V_stick (m/s)
-    v_stick: _F  # V_stick (m/s)
-    t_vis: _F  # the relaxation time used (s)
-    v_frag_jkr: _F  # V_frag,JKR (m/s)
-    v_stick_jkr: _F  # V_stick,JKR (m/s)
-    no_bouncing_below: _F  # the search limit without bouncing (m/s)
-    method: npt.NDArray[np.uint8]  # 0: the search answered, 1: the table
+    v_frag: _C  # V_frag = 10 V_stick (m/s)
+    v_stick: _C  # V_stick (m/s)
+    t_vis: _C  # the relaxation time used (s)
+    v_frag_jkr: _C  # V_frag,JKR (m/s)
+    v_stick_jkr: _C  # V_stick,JKR (m/s)
+    no_bouncing_below: _C  # the search limit without bouncing (m/s)
+    method: _M  # 0: the search answered, 1: the table
     warnings: _Warnings
 
 class FitColumns(TypedDict):
     """The columns of :func:`fit_t_vis` (flat)."""
 
-    t_vis: _F  # T_vis for V_stick (s)
-    t_vis_min: _F  # T_vis for V_stick - dV (s; 0 at or below V_stick,JKR)
-    t_vis_max: _F  # T_vis for V_stick + dV (s)
-    v_stick_jkr: _F  # V_stick,JKR (m/s)
-    method: npt.NDArray[np.uint8]  # 1 when the table gave every V_stick, else 0
+    t_vis: _C  # T_vis for V_stick (s)
+    t_vis_min: _C  # T_vis for V_stick - dV (s; 0 at or below V_stick,JKR)
+    t_vis_max: _C  # T_vis for V_stick + dV (s)
+    v_stick_jkr: _C  # V_stick,JKR (m/s)
+    method: _M  # 1 when the table gave every V_stick, else 0
     warnings: _Warnings
 
-def crack_speed(k: _F, beta: _F) -> _F: ...
-def t_vis_law(law: str, radius: _F) -> _F: ...
+def crack_speed(k: _N, beta: _N) -> _F: ...
+def t_vis_law(law: str, radius: _N) -> _F: ...
 def parallel_batch() -> int: ...
-def jkr(material: Material, radius: _F, radius2: Optional[_F], wall: bool) -> JkrColumns: ...
+def jkr(material: Material, radius: _N, radius2: Optional[_N], wall: bool) -> JkrColumns: ...
 def dimensionless(
     material: Material,
-    radius: _F,
-    radius2: Optional[_F],
+    radius: _N,
+    radius2: Optional[_N],
     wall: bool,
-    t_vis: _F,
-    gamma_sv: Optional[_F] = None,
+    t_vis: _N,
+    gamma_sv: Optional[_N] = None,
 ) -> DimensionlessColumns: ...
 def collide(
     material: Material,
-    radius: _F,
-    radius2: Optional[_F],
+    radius: _N,
+    radius2: Optional[_N],
     wall: bool,
-    t_vis: _F,
-    v_in: _F,
-    k: _F,
+    t_vis: _N,
+    v_in: _N,
+    k: _N,
     t_end: Optional[float],
     trajectory: bool,
     method: str = "search",
-    gamma_sv: Optional[_F] = None,
+    gamma_sv: Optional[_N] = None,
 ) -> CollisionColumns: ...
 def v_stick(
     material: Material,
-    radius: _F,
-    radius2: Optional[_F],
+    radius: _N,
+    radius2: Optional[_N],
     wall: bool,
-    t_vis: _F,
-    k: _F,
+    t_vis: _N,
+    k: _N,
     v_max: Optional[float],
     rel_tol: float,
     method: str,
-    gamma_sv: Optional[_F] = None,
+    gamma_sv: Optional[_N] = None,
 ) -> VStickColumns: ...
 def fit_t_vis(
     material: Material,
-    radius: _F,
-    radius2: Optional[_F],
+    radius: _N,
+    radius2: Optional[_N],
     wall: bool,
-    v_stick: _F,
-    v_stick_err: _F,
-    k: _F,
+    v_stick: _N,
+    v_stick_err: _N,
+    k: _N,
     v_max: Optional[float],
     rel_tol: float,
     method: str,
-    gamma_sv: Optional[_F] = None,
+    gamma_sv: Optional[_N] = None,
 ) -> FitColumns: ...
 def v_frag(
     material: Material,
-    radius: _F,
-    radius2: Optional[_F],
+    radius: _N,
+    radius2: Optional[_N],
     wall: bool,
-    t_vis: _F,
-    k: _F,
+    t_vis: _N,
+    k: _N,
     v_max: Optional[float],
     rel_tol: float,
     method: str,
-    gamma_sv: Optional[_F] = None,
+    gamma_sv: Optional[_N] = None,
 ) -> VFragColumns: ...
 def sweep(
     materials: List[Tuple[str, Material]],

@@ -139,10 +139,10 @@ def _seeds(model: Model, free: Tuple[str, ...], fixed: Dict[str, float], lo: np.
         m = model.material.replace(gamma_sv=float(g))
         for v in speeds:
             try:  # speeds below V_stick,JKR have no T_vis: skipped
-                t = _core.fit_t_vis(
+                t = np.asarray(_core.fit_t_vis(
                     m, np.array([model.sizes.median]), second, model.wall, np.array([v]),
                     np.zeros(1), np.array([model.k]), None, model.rel_tol, model.method,
-                )["t_vis"][0]
+                )["t_vis"])[0]
             except (ValueError, RuntimeError):
                 continue
             point = np.empty(lo.size)

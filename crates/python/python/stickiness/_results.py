@@ -41,21 +41,13 @@ class JKR:
         V_stick,JKR = (14.18/m*)^(1/2) (gamma^5 R^4/E*^2)^(1/6) (m/s).
     """
 
-    #: Equilibrium contact radius a_eq (m).
     a_eq: FloatOrArray
-    #: Equilibrium mutual approach delta_eq (m).
     delta_eq: FloatOrArray
-    #: Tabor parameter mu (dimensionless); JKR theory needs mu >> 1.
     tabor: FloatOrArray
-    #: Pull-off force F_crit = 3 pi gamma R / 2 (N).
     f_crit: FloatOrArray
-    #: Critical pulling length delta_crit (m).
     delta_crit: FloatOrArray
-    #: E_stick,JKR = m* V_stick,JKR^2 / 2 (J).
     e_stick: FloatOrArray
-    #: E_break,JKR = 1.54 F_crit delta_crit (J).
     e_break: FloatOrArray
-    #: V_stick,JKR (m/s).
     v_stick_jkr: FloatOrArray
 
 
@@ -74,11 +66,8 @@ class Dimensionless:
         Time unit t0 = sqrt(m* delta_eq/(3 pi gamma R)) (s).
     """
 
-    #: Drag number c_D (dimensionless).
     c_d: FloatOrArray
-    #: Crack-speed number c_a (dimensionless).
     c_a: FloatOrArray
-    #: JKR time unit t0 (s).
     t0: FloatOrArray
 
 
@@ -113,23 +102,14 @@ class Collision:
         tables: outcome, e and V_out only; no contact time or criterion).
     """
 
-    #: ``'sticking'``, ``'double'`` or ``'bouncing'`` (an array of these for array inputs).
     outcome: StrOrArray
-    #: Coefficient of restitution e = -V_out/V_in (0 for sticking, negative for double).
     e: FloatOrArray
-    #: Approach speed when the contact ends (m/s): < 0 separate, > 0 a second contact follows.
     v_out: FloatOrArray
-    #: Duration of the contact (s); None for a sticking collision (NaN in arrays).
     contact_time: Union[None, float, np.ndarray]
-    #: V_stick,JKR of the contact (m/s).
     v_stick_jkr: FloatOrArray
-    #: How sticking was decided: ``'energy_bound'`` or ``'oscillations'``; None otherwise.
     sticking_criterion: Union[None, str, List[Optional[str]]]
-    #: The observed coefficient of restitution: e for bouncing, 0 otherwise (Section 4.4).
     e_observed: FloatOrArray
-    #: With ``trajectory=True``: ``t``, ``a``, ``delta``, ``delta_dot``, ``beta``, ``energy``.
     trajectory: Optional[Dict[str, np.ndarray]] = None
-    #: Which answered: ``'ode'`` or ``'table'``.
     method: StrOrArray = "ode"
 
 
@@ -157,19 +137,12 @@ class VStick:
         Which answered: ``'search'`` (the exact search) or ``'table'`` (the master table).
     """
 
-    #: V_stick (m/s); NaN without bouncing up to ``no_bouncing_below``.
     v_stick: FloatOrArray
-    #: Sticking -> double collision (m/s); NaN when every collision up to the limit sticks.
     v_double_onset: FloatOrArray
-    #: V_stick,JKR, the T_vis -> 0 limit (m/s).
     v_stick_jkr: FloatOrArray
-    #: The search limit where no collision bounced (m/s); NaN where bouncing was found.
     no_bouncing_below: FloatOrArray
-    #: The relaxation time used (s).
     t_vis: FloatOrArray
-    #: The highest impact speed searched (m/s).
     v_max: FloatOrArray
-    #: Which answered: ``'search'`` or ``'table'``.
     method: StrOrArray
 
 
@@ -191,15 +164,10 @@ class TVisFit:
         ``'table'`` when the master table gave every V_stick the fit needed, else ``'search'``.
     """
 
-    #: T_vis for the measured V_stick (s).
     t_vis: FloatOrArray
-    #: T_vis for V_stick - dV (s); 0 when that is at or below V_stick,JKR.
     t_vis_min: FloatOrArray
-    #: T_vis for V_stick + dV (s).
     t_vis_max: FloatOrArray
-    #: V_stick,JKR of the contact (m/s).
     v_stick_jkr: FloatOrArray
-    #: Which answered: ``'search'`` or ``'table'``.
     method: StrOrArray
 
 
@@ -225,17 +193,10 @@ class VFrag:
         Which answered: ``'search'`` or ``'table'``.
     """
 
-    #: V_frag (m/s); NaN without bouncing up to ``no_bouncing_below``.
     v_frag: FloatOrArray
-    #: V_stick of the monomers (m/s); NaN as ``v_frag``.
     v_stick: FloatOrArray
-    #: The relaxation time used (s); 0 is the JKR limit.
     t_vis: FloatOrArray
-    #: V_frag,JKR = 10 V_stick,JKR (m/s).
     v_frag_jkr: FloatOrArray
-    #: V_stick,JKR (m/s).
     v_stick_jkr: FloatOrArray
-    #: The search limit where no collision bounced (m/s); NaN where bouncing was found.
     no_bouncing_below: FloatOrArray
-    #: Which answered: ``'search'`` or ``'table'``.
     method: StrOrArray

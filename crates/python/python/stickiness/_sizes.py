@@ -150,17 +150,21 @@ def weighted_quantile(values: Any, weights: Any, q: float) -> Any:
     end values; an infinite value (a V_stick beyond the search limit) sorts last and is returned
     as it is once reached. A float for 1-d ``values``, an array of the leading shape otherwise."""
     v = np.asarray(values, dtype=float)
-    w = np.broadcast_to(np.asarray(weights, dtype=float), v.shape)
-    order = np.argsort(v, axis=-1, kind="stable")
-    v = np.take_along_axis(v, order, axis=-1)
-    w = np.take_along_axis(w, order, axis=-1)
-    mid = np.cumsum(w, axis=-1) - 0.5 * w
+    lead = v.shape[:-1]
     n = v.shape[-1]
-    j = np.clip(np.sum(mid < q, axis=-1, keepdims=True), 1, max(n - 1, 1))
+    v = v.reshape(-1, n)
+    w = np.broadcast_to(np.asarray(weights, dtype=float), lead + (n,)).reshape(-1, n)
+    # fancy indexing with the rows' index, not take_along_axis: a sampler calls this at every
+    # step for all walkers, and take_along_axis builds its index in Python each time
+    rows = np.arange(v.shape[0])
+    order = np.argsort(v, axis=-1, kind="stable")
+    v, w = v[rows[:, None], order], w[rows[:, None], order]
+    mid = np.cumsum(w, axis=-1) - 0.5 * w
+    j = np.clip(np.sum(mid < q, axis=-1), 1, max(n - 1, 1))
     lo, hi = np.maximum(j - 1, 0), np.minimum(j, n - 1)
-    a, b = np.take_along_axis(v, lo, -1)[..., 0], np.take_along_axis(v, hi, -1)[..., 0]
-    ma, mb = np.take_along_axis(mid, lo, -1)[..., 0], np.take_along_axis(mid, hi, -1)[..., 0]
+    a, b = v[rows, lo], v[rows, hi]
+    ma, mb = mid[rows, lo], mid[rows, hi]
     with np.errstate(invalid="ignore", divide="ignore"):
         f = np.clip(np.where(mb > ma, (q - ma) / (mb - ma), 0.0), 0.0, 1.0)
-        out = np.where(f == 0.0, a, np.where(f == 1.0, b, a + f * (b - a)))
+        out = np.where(f == 0.0, a, np.where(f == 1.0, b, a + f * (b - a))).reshape(lead)
     return float(out) if out.ndim == 0 else out
