@@ -175,6 +175,24 @@ def test_simulation_based_calibration_with_restitution():
     assert 0.90 <= inside95 / sets <= 0.99, inside95
 
 
+def test_the_probability_of_sticking_is_the_weight_of_the_radii_above_the_speed():
+    # the likelihood's sorted lookup against its definition, every speed compared with every
+    # radius: P(stuck | v) = sum of the weights of the radii with v < V_stick(R); ties (v equal
+    # to a V_stick) do not stick, V_stick beyond the search limit (inf) always sticks
+    from stickiness._likelihood import stuck_probability
+
+    rng = np.random.default_rng(0)
+    for walkers, radii, speeds in [(16, 64, 300), (3, 1, 5), (8, 5, 7)]:
+        vs = rng.lognormal(-3.0, 0.5, (walkers, radii))
+        vs[rng.random(vs.shape) < 0.1] = np.inf
+        w = rng.random(radii)
+        w /= w.sum()
+        v = rng.lognormal(-3.0, 0.6, speeds)
+        v[0] = vs[0, 0] if np.isfinite(vs[0, 0]) else v[0]
+        direct = np.array([[w[vs[i] > x].sum() for x in v] for i in range(walkers)])
+        np.testing.assert_allclose(stuck_probability(vs, w, v), direct, rtol=0, atol=1e-15)
+
+
 def test_the_same_seed_gives_the_same_chain():
     a = st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=100, seed=4)
     b = st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=100, seed=4)
