@@ -28,6 +28,7 @@ is in docs/performance.md ("DustPy case study").
 
 import argparse
 import concurrent.futures as cf
+import json
 import math
 import multiprocessing
 import time
@@ -73,7 +74,45 @@ def posteriors(steps: int, seed: int) -> dict:
     return {"co2": co2, "h2o": h2o}
 
 
-def run(name: str, quantile, post: dict, args) -> dict:
+#: The file in the checkpoint directory that keeps the runs' V_frag of the ices (m/s), computed
+#: once from the posteriors: a sampler or table that changes between sittings must not change a
+#: run's input halfway.
+V_FRAG_FILE = "v_frag.json"
+
+
+def ice_v_frags(args) -> dict:
+    """``{quantile: {'co2': V_frag, 'h2o': V_frag}}`` (m/s) of the 0.1 um monomers: from the
+    checkpoint directory's V_FRAG_FILE when resuming (made with the same --steps and --seed),
+    else from the posteriors (``st.infer``), then written there."""
+    path = Path(args.checkpoints) / V_FRAG_FILE
+    made_with = {"steps": args.steps, "seed": args.seed, "monomer_radius": MONOMER_RADIUS}
+    if args.resume and path.exists():
+        saved = json.loads(path.read_text())
+        for key, value in made_with.items():
+            if saved[key] != value:
+                raise SystemExit(f"{path}: made with {key} = {saved[key]}, not {value}")
+        print(f"V_frag of the ices from {path} ({saved['note']})")
+        return {float(q): v for q, v in saved["v_frag"].items()}
+    start = time.perf_counter()
+    post = posteriors(args.steps, args.seed)
+    found = {}
+    for q in sorted({q for q in RUNS.values() if q is not None}):
+        profile = sd.VFragProfile(MONOMER_RADIUS, posteriors=post, quantile=q)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", st.StickinessWarning)
+            found[q] = {ice: profile.ice_v_frag(ice, MONOMER_RADIUS) for ice in post}
+    for ice in post:
+        print(f"{ice}: V_frag (m/s) of 0.1 um monomers, 16/50/84 %: "
+              + ", ".join(f"{found[q][ice]:.3g}" for q in sorted(found)))
+    print(f"posteriors: {time.perf_counter() - start:.1f} s")
+    path.parent.mkdir(parents=True, exist_ok=True)
+    note = f"st.infer of stickiness {st.__version__}, {time.strftime('%Y-%m-%d')}"
+    path.write_text(json.dumps({**made_with, "note": note,
+                                "v_frag": {repr(q): v for q, v in found.items()}}, indent=1))
+    return found
+
+
+def run(name: str, quantile, v_frags: dict, args) -> dict:
     """One DustPy run to ``args.years``; returns its final state (cgs, as DustPy keeps it)."""
     from dustpy import Simulation
     from dustpy import constants as c
@@ -86,10 +125,8 @@ def run(name: str, quantile, post: dict, args) -> dict:
     sim.ini.dust.vFrag = CONSTANT_V_FRAG * sd.CM_PER_M  # cm/s
     sim.initialize()
     if quantile is not None:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", st.StickinessWarning)
-            sd.set_vfrag(sim, MONOMER_RADIUS, v_frag_refractory=args.v_frag_refractory,
-                         posteriors=post, quantile=quantile)
+        sd.set_vfrag(sim, MONOMER_RADIUS, v_frag_refractory=args.v_frag_refractory,
+                     v_frag=v_frags[quantile])
     sim.writer = None
     sim.verbosity = 0
     settings = {"nr": args.nr, "mmax": args.mmax, "v_frag_refractory": args.v_frag_refractory,
@@ -330,18 +367,13 @@ def main() -> None:
         states = {k: saved[k].item() for k in saved.files}
     else:
         start = time.perf_counter()
-        post = posteriors(args.steps, args.seed)
-        for ice, q in post.items():
-            band = q.v_frag(MONOMER_RADIUS, quantiles=(0.16, 0.5, 0.84))
-            print(f"{ice}: V_frag (m/s) of 0.1 um monomers, 16/50/84 %: "
-                  + ", ".join(f"{v:.3g}" for v in band.to_numpy().ravel()))
-        print(f"posteriors: {time.perf_counter() - start:.1f} s")
+        v_frags = ice_v_frags(args)
         # spawn: fresh workers (fork after the core's threads have started is unsafe)
         ctx = multiprocessing.get_context("spawn")
         Path(args.data).parent.mkdir(parents=True, exist_ok=True)
         states = {}
         with cf.ProcessPoolExecutor(args.processes, mp_context=ctx) as pool:
-            jobs = [pool.submit(run, n, q, post, args) for n, q in RUNS.items()]
+            jobs = [pool.submit(run, n, q, v_frags, args) for n, q in RUNS.items()]
             for job in cf.as_completed(jobs):
                 state = job.result()
                 states[state["name"]] = state

@@ -1,5 +1,6 @@
 """stickiness.dustpy with the real DustPy (installed by `cargo xtask test`; never skipped)."""
 
+import json
 import math
 import subprocess
 import sys
@@ -25,6 +26,21 @@ def test_zones_and_the_factor_100():
         assert math.isclose(v[at], 100 * table.v_frag, rel_tol=1e-15) and v[at + 1] == v[at]
         search = st.v_frag(m, 1e-7, t_vis_law=ice)
         assert math.isclose(v[at], 100 * search.v_frag, rel_tol=1e-5)
+
+
+def test_a_given_v_frag_replaces_an_ices_law():
+    # given V_frag for CO2 (20 m/s): 2000 cm/s at every radius of the CO2 zone; H2O keeps its
+    # law; a wrong value or a posterior for the same ice is refused, naming the argument
+    T = np.array([300.0, 100.0, 50.0, 20.0])
+    radius = np.array([1e-7, 1e-7, 1e-7, 1e-6])
+    v = sd.vfrag_profile(T, monomer_radius=radius, v_frag={"co2": 20.0})
+    law = sd.vfrag_profile(T, monomer_radius=radius)
+    np.testing.assert_allclose(v[2:], 2000.0, rtol=1e-14)  # through exp(ln V_frag)
+    assert v[0] == law[0] and v[1] == law[1]
+    with pytest.raises(ValueError, match=r"v_frag\['co2'\]"):
+        sd.vfrag_profile(T, v_frag={"co2": -1.0})
+    with pytest.raises(ValueError, match="unknown ice"):
+        sd.vfrag_profile(T, v_frag={"co": 1.0})
 
 
 def test_per_cell_radius_and_smooth_transitions():
@@ -103,6 +119,9 @@ def test_case_study_runs(tmp_path, root):
                           text=True, cwd=tmp_path, timeout=900)
     assert more.returncode == 0, more.stderr
     assert "constant: 20 yr after" in more.stdout and ": 10 yr after" not in more.stdout
+    # ... with the ices' V_frag kept from the start (not inferred again)
+    assert "V_frag of the ices from" in more.stdout and "posteriors:" not in more.stdout
+    frozen = json.loads((tmp_path / "runs" / "v_frag.json").read_text())["v_frag"]
     year = 365.25 * 86400.0
     for name in ("constant", "q16", "median", "q84"):
         assert float(np.load(tmp_path / "runs" / f"{name}.npz")["t"]) / year == pytest.approx(20)
@@ -120,6 +139,8 @@ def test_case_study_runs(tmp_path, root):
     median = saved["median"].item()
     hot = median["T"] > sd.T_H2O
     assert hot.any() and np.allclose(median["v_frag"][hot], 1.0)
+    cold = median["T"] <= sd.T_CO2
+    assert cold.any() and np.allclose(median["v_frag"][cold], frozen["0.5"]["co2"], rtol=1e-12)
     replot = subprocess.run(
         [sys.executable, str(root / "examples" / "dustpy" / "case_study.py"), "--replot",
          "--out-dir", str(tmp_path), "--data", str(data)],

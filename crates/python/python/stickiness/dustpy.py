@@ -81,6 +81,7 @@ class VFragProfile:
         width: Optional[float] = None,
         posteriors: Optional[Dict[str, Any]] = None,
         quantile: float = 0.5,
+        v_frag: Optional[Dict[str, float]] = None,
     ) -> None:
         radius = _args.float_array("monomer_radius", monomer_radius)
         t_h2o = _args.scalar("t_h2o", t_h2o)
@@ -107,6 +108,15 @@ class VFragProfile:
         quantile = _args.scalar("quantile", quantile)
         if not 0.0 <= quantile <= 1.0:
             raise ValueError(f"quantile = {quantile!r}: must be within 0 .. 1")
+        given: Dict[str, float] = {}
+        form = "{'co2' | 'h2o': V_frag in m/s}"
+        for ice, value in _args.keyed("v_frag", v_frag, form, tuple(_ICES), unknown):
+            value = _args.scalar(f"v_frag[{ice!r}]", _args.si("v_frag", value))
+            if not (math.isfinite(value) and value > 0):
+                raise ValueError(f"v_frag[{ice!r}] = {value!r}: must be > 0 and finite (m/s)")
+            if ice in (posteriors or {}):
+                raise ValueError(f"v_frag[{ice!r}]: give {ice} a posterior or a V_frag, not both")
+            given[ice] = value
         self.monomer_radius = radius
         #: Posteriors of T_vis per ice (``'co2'``, ``'h2o'``) replacing the Section 5.3 laws.
         self.posteriors: Dict[str, Posterior] = dict(posteriors or {})
@@ -116,6 +126,8 @@ class VFragProfile:
         self.t_co2 = float(t_co2)
         self.v_frag_refractory = float(v_frag_refractory)
         self.width = width
+        #: V_frag (m/s) given per ice, replacing its size law or posterior at every radius.
+        self.v_frag: Dict[str, float] = given
         self._cache: Dict[Tuple[str, float], float] = {}
 
     def ice_v_frag(self, ice: str, radius: float) -> float:
@@ -129,7 +141,10 @@ class VFragProfile:
         if missing:
             material, law = _ICES[ice]
             try:
-                if ice in self.posteriors:
+                if ice in self.v_frag:
+                    values = np.full(len(missing), self.v_frag[ice])
+                    limits = np.full(len(missing), np.nan)
+                elif ice in self.posteriors:
                     # the posterior's T_vis carried to each monomer size by the size law
                     post = self.posteriors[ice]
                     q = post.v_frag(np.array(missing), quantiles=(self.quantile,))
@@ -202,6 +217,7 @@ def vfrag_profile(
     width: Optional[float] = None,
     posteriors: Optional[Dict[str, Any]] = None,
     quantile: float = 0.5,
+    v_frag: Optional[Dict[str, float]] = None,
 ) -> np.ndarray:
     """V_frag IN cm/s at temperatures ``T`` (K) for monomers of ``monomer_radius`` (m).
 
@@ -226,6 +242,12 @@ def vfrag_profile(
     quantile : float, optional
         The posterior quantile (0..1), e.g. 0.16 and 0.84 to bracket a disc run by the data's
         uncertainty. Default 0.5.
+    v_frag : dict, optional
+        ``{'co2': V_frag, 'h2o': V_frag}`` (m/s): a given V_frag for those ices at every
+        monomer radius, replacing their laws (not with a posterior for the same ice). For a
+        run that goes on over several sittings: the posterior's quantile computed once and
+        kept with the run, so that a sampler or table that changes between sittings cannot
+        change the run's input.
 
     Returns
     -------
@@ -234,7 +256,7 @@ def vfrag_profile(
     """
     return VFragProfile(
         monomer_radius, t_h2o=t_h2o, t_co2=t_co2, v_frag_refractory=v_frag_refractory,
-        width=width, posteriors=posteriors, quantile=quantile,
+        width=width, posteriors=posteriors, quantile=quantile, v_frag=v_frag,
     )(T)
 
 
@@ -248,6 +270,7 @@ def set_vfrag(
     width: Optional[float] = None,
     posteriors: Optional[Dict[str, Any]] = None,
     quantile: float = 0.5,
+    v_frag: Optional[Dict[str, float]] = None,
 ) -> VFragProfile:
     """Installs an updater on ``sim.dust.v.frag`` (an initialised DustPy Simulation) so that it
     follows ``sim.gas.T`` (in cm/s), and applies it at once.
@@ -260,7 +283,7 @@ def set_vfrag(
         raise ValueError("sim.dust.v.frag does not exist yet: call sim.initialize() first")
     profile = VFragProfile(
         monomer_radius, t_h2o=t_h2o, t_co2=t_co2, v_frag_refractory=v_frag_refractory,
-        width=width, posteriors=posteriors, quantile=quantile,
+        width=width, posteriors=posteriors, quantile=quantile, v_frag=v_frag,
     )
 
     def updater(s: Any) -> np.ndarray:
