@@ -120,6 +120,24 @@ def test_recovery_from_restitution_alone():
     assert lo < CO2.gamma_sv < hi
 
 
+def coverage(sets, rng, prior, posterior_of):
+    """The shares of `sets` data sets whose 68 % and 95 % T_vis intervals hold the truth: each
+    truth drawn log-uniformly from `prior` (s), `posterior_of(t_true, i)` the posterior of data
+    made with it."""
+    inside68 = inside95 = 0
+    for i in range(sets):
+        t_true = 10 ** rng.uniform(*np.log10(prior))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", st.StickinessWarning)
+            post = posterior_of(t_true, i)
+        lo, hi = post.interval("t_vis", level=0.68)
+        inside68 += lo < t_true < hi
+        lo, hi = post.interval("t_vis", level=0.95)
+        inside95 += lo < t_true < hi
+    print(f"coverage over {sets} sets: 68 %: {inside68 / sets:.3f}, 95 %: {inside95 / sets:.3f}")
+    return inside68 / sets, inside95 / sets
+
+
 def test_simulation_based_calibration():
     # truth: parameters drawn from the prior and data made with the model at them; then the
     # 68 % and 95 % intervals must cover the truth in 68 % and 95 % of the data sets
@@ -128,24 +146,17 @@ def test_simulation_based_calibration():
     # of 3000 sets: what is tested here is that the sampler reaches it.
     rng = np.random.default_rng(1)
     prior = (1e-12, 1e-9)
-    sets, inside68, inside95 = 200, 0, 0
     speeds = np.geomspace(0.015, 0.06, 8)  # a fixed design of sticking experiments
-    for i in range(sets):
-        t_true = 10 ** rng.uniform(*np.log10(prior))
+
+    def posterior_of(t_true, i):
         v_true = st.v_stick(CO2, R, t_true, method="table").v_stick
         sigma = 0.1 * v_true
         measured = v_true + rng.normal(0.0, sigma)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", st.StickinessWarning)
-            post = st.infer(CO2, R, v_stick=(measured, sigma), sticking=(speeds, speeds < v_true),
-                            priors={"t_vis": prior}, walkers=16, steps=400, burn=100, seed=i)
-        lo, hi = post.interval("t_vis", level=0.68)
-        inside68 += lo < t_true < hi
-        lo, hi = post.interval("t_vis", level=0.95)
-        inside95 += lo < t_true < hi
-    print(f"coverage over {sets} sets: 68 %: {inside68 / sets:.3f}, 95 %: {inside95 / sets:.3f}")
-    assert 0.60 <= inside68 / sets <= 0.76, inside68
-    assert 0.90 <= inside95 / sets <= 0.99, inside95
+        return st.infer(CO2, R, v_stick=(measured, sigma), sticking=(speeds, speeds < v_true),
+                        priors={"t_vis": prior}, walkers=16, steps=400, burn=100, seed=i)
+
+    c68, c95 = coverage(200, rng, prior, posterior_of)
+    assert 0.60 <= c68 <= 0.76 and 0.90 <= c95 <= 0.99, (c68, c95)
 
 
 def test_simulation_based_calibration_with_restitution():
@@ -157,40 +168,15 @@ def test_simulation_based_calibration_with_restitution():
     rng = np.random.default_rng(2)
     prior = (1e-12, 1e-10)
     speeds, sigma = np.array([0.025, 0.03, 0.035, 0.04]), 0.02
-    sets, inside68, inside95 = 200, 0, 0
-    for i in range(sets):
-        t_true = 10 ** rng.uniform(*np.log10(prior))
+
+    def posterior_of(t_true, i):
         e = st.collide(CO2, R, t_true, speeds).e_observed + rng.normal(0.0, sigma, speeds.size)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", st.StickinessWarning)
-            data = (speeds, np.clip(e, 0.0, 1.0), np.full(speeds.size, sigma))
-            post = st.infer(CO2, R, restitution=data, priors={"t_vis": prior}, walkers=16,
-                            steps=200, burn=60, seed=i)
-        lo, hi = post.interval("t_vis", level=0.68)
-        inside68 += lo < t_true < hi
-        lo, hi = post.interval("t_vis", level=0.95)
-        inside95 += lo < t_true < hi
-    print(f"coverage over {sets} sets: 68 %: {inside68 / sets:.3f}, 95 %: {inside95 / sets:.3f}")
-    assert 0.60 <= inside68 / sets <= 0.76, inside68
-    assert 0.90 <= inside95 / sets <= 0.99, inside95
+        data = (speeds, np.clip(e, 0.0, 1.0), np.full(speeds.size, sigma))
+        return st.infer(CO2, R, restitution=data, priors={"t_vis": prior}, walkers=16,
+                        steps=200, burn=60, seed=i)
 
-
-def test_the_probability_of_sticking_is_the_weight_of_the_radii_above_the_speed():
-    # the likelihood's sorted lookup against its definition, every speed compared with every
-    # radius: P(stuck | v) = sum of the weights of the radii with v < V_stick(R); ties (v equal
-    # to a V_stick) do not stick, V_stick beyond the search limit (inf) always sticks
-    from stickiness._likelihood import stuck_probability
-
-    rng = np.random.default_rng(0)
-    for walkers, radii, speeds in [(16, 64, 300), (3, 1, 5), (8, 5, 7)]:
-        vs = rng.lognormal(-3.0, 0.5, (walkers, radii))
-        vs[rng.random(vs.shape) < 0.1] = np.inf
-        w = rng.random(radii)
-        w /= w.sum()
-        v = rng.lognormal(-3.0, 0.6, speeds)
-        v[0] = vs[0, 0] if np.isfinite(vs[0, 0]) else v[0]
-        direct = np.array([[w[vs[i] > x].sum() for x in v] for i in range(walkers)])
-        np.testing.assert_allclose(stuck_probability(vs, w, v), direct, rtol=0, atol=1e-15)
+    c68, c95 = coverage(200, rng, prior, posterior_of)
+    assert 0.60 <= c68 <= 0.76 and 0.90 <= c95 <= 0.99, (c68, c95)
 
 
 @pytest.mark.parametrize("ndim", [1, 2])
