@@ -187,13 +187,13 @@ def test_the_snooker_move_keeps_its_target(ndim):
     # for 32 walkers x 2500 steps at an autocorrelation time of 4.5-9 steps)
     import emcee
 
-    from stickiness._moves import snooker_move
+    from stickiness._moves import SnookerMove
 
     cov = np.array([[1.0, 0.8], [0.8, 1.0]])[:ndim, :ndim]
     icov = np.linalg.inv(cov)
     sampler = emcee.EnsembleSampler(
         32, ndim, lambda th: -0.5 * np.einsum("ij,jk,ik->i", th, icov, th), vectorize=True,
-        moves=[(snooker_move(), 1.0)],
+        moves=[(SnookerMove(), 1.0)],
     )
     start = np.random.default_rng(0).normal(0.0, 1.0, (32, ndim))
     state = emcee.State(start, random_state=np.random.RandomState(1).get_state())

@@ -18,7 +18,6 @@ from . import _args, _core
 from ._args import StickinessWarning
 from ._core import DEFAULT_K, DEFAULT_RADIUS, DEFAULT_REL_TOL
 from ._likelihood import PARAMETERS, Data, Model, priors as _priors
-from ._moves import snooker_move
 from ._posterior import Posterior
 from ._sizes import SizeDistribution
 
@@ -375,7 +374,9 @@ def infer(
     # ridge along which T_vis and gamma_SV trade off (H2O, 9.6 m/s at 1.5 um; 32 walkers, 3000
     # steps) its autocorrelation times are 55 steps against 150 for emcee's default stretch
     # move, and 1-d posteriors lose nothing. The snooker is ours: emcee's is biased (_moves)
-    moves = [(emcee.moves.DEMove(), 1.0 - SNOOKER_SHARE), (snooker_move(), SNOOKER_SHARE)]
+    from ._moves import SnookerMove
+
+    moves = [(emcee.moves.DEMove(), 1.0 - SNOOKER_SHARE), (SnookerMove(), SNOOKER_SHARE)]
     sampler = emcee.EnsembleSampler(walkers, len(free), log_prob, moves=moves, vectorize=True)
     state = emcee.State(
         start, log_prob=lp0,

@@ -10,13 +10,15 @@ a standard normal in one dimension, 32 walkers x 20000 steps of it alone give a 
 released. :class:`SnookerMove` is the move of ter Braak & Vrugt (2008), Statistics and
 Computing 18, 435, Section 3: anchor z, unit vector u = (x - z) / |x - z|, proposal
 x' = x + gamma u (u . (z1 - z2)), acceptance factor (|x' - z| / |x - z|)^(d - 1); vectorised
-over the walkers (one numpy expression instead of a Python loop a walker).
+over the walkers (one numpy expression instead of a Python loop a walker). Imported only
+when sampling (emcee is an optional dependency).
 """
 
 from __future__ import annotations
 
 from typing import Any, List, Tuple
 
+import emcee  # type: ignore[import-untyped,unused-ignore]
 import numpy as np
 
 #: The snooker's step factor gamma: ter Braak & Vrugt (2008) draw it from U(1.2, 2.2); 1.7, its
@@ -27,33 +29,29 @@ SNOOKER_GAMMA = 1.7
 SNOOKER_SPLITS = 4
 
 
-def snooker_move() -> Any:
-    """A :class:`SnookerMove` (an emcee move; emcee is imported only here, when sampling)."""
-    import emcee  # type: ignore[import-untyped,unused-ignore]
+class SnookerMove(emcee.moves.RedBlueMove):  # type: ignore[misc,unused-ignore]
+    """The DE snooker update of ter Braak & Vrugt (2008), as emcee's ``DESnookerMove`` means
+    it, with the unit vector; see the module."""
 
-    class SnookerMove(emcee.moves.RedBlueMove):  # type: ignore[misc,unused-ignore]
-        """The DE snooker update of ter Braak & Vrugt (2008), as emcee's ``DESnookerMove``
-        means it, with the unit vector; see the module."""
+    def __init__(self) -> None:
+        super().__init__(nsplits=SNOOKER_SPLITS)
 
-        def __init__(self) -> None:
-            super().__init__(nsplits=SNOOKER_SPLITS)
-
-        def get_proposal(
-            self, s: np.ndarray, c: List[np.ndarray], random: Any
-        ) -> Tuple[np.ndarray, np.ndarray]:
-            n, ndim = s.shape
-            # one walker of each of three other sub-ensembles for every walker, in random order
-            picks = np.stack([cj[random.randint(len(cj), size=n)] for cj in c[:3]], axis=1)
-            order = np.argsort(random.rand(n, 3), axis=1)
-            picks = picks[np.arange(n)[:, None], order]
-            z, z1, z2 = picks[:, 0], picks[:, 1], picks[:, 2]
-            delta = s - z
-            norm = np.linalg.norm(delta, axis=1)
-            # a walker on its anchor has no direction: its NaN proposal is rejected
-            with np.errstate(invalid="ignore", divide="ignore"):
-                u = delta / norm[:, None]
-                q = s + SNOOKER_GAMMA * u * np.sum(u * (z1 - z2), axis=1, keepdims=True)
-                factor = (ndim - 1.0) * (np.log(np.linalg.norm(q - z, axis=1)) - np.log(norm))
-            return q, factor
-
-    return SnookerMove()
+    def get_proposal(
+        self, s: np.ndarray, c: List[np.ndarray], random: Any
+    ) -> Tuple[np.ndarray, np.ndarray]:
+        """Proposals for the walkers ``s`` from the other sub-ensembles ``c``, and the log of
+        their acceptance factors."""
+        n, ndim = s.shape
+        # one walker of each of three other sub-ensembles for every walker, in random order
+        picks = np.stack([cj[random.randint(len(cj), size=n)] for cj in c[:3]], axis=1)
+        order = np.argsort(random.rand(n, 3), axis=1)
+        picks = picks[np.arange(n)[:, None], order]
+        z, z1, z2 = picks[:, 0], picks[:, 1], picks[:, 2]
+        delta = s - z
+        norm = np.linalg.norm(delta, axis=1)
+        # a walker on its anchor has no direction: its NaN proposal is rejected
+        with np.errstate(invalid="ignore", divide="ignore"):
+            u = delta / norm[:, None]
+            q = s + SNOOKER_GAMMA * u * np.sum(u * (z1 - z2), axis=1, keepdims=True)
+            factor = (ndim - 1.0) * (np.log(np.linalg.norm(q - z, axis=1)) - np.log(norm))
+        return q, factor
