@@ -463,6 +463,29 @@ impl Contact {
         }
     }
 
+    /// The product c_D c_a of [`Contact::dimensionless`] (dimensionless), which does not depend
+    /// on T_vis: `c_D c_a = 2 E*^2 gamma t0^2 / (nu^2 m* sigma0^2)`. The master tables' second
+    /// axis y = log10(c_D c_a) taken from it is the same to the bit at every T_vis of a contact,
+    /// so that an array at one radius finds its place along y once.
+    ///
+    /// # Example
+    /// ```
+    /// use contact::{Contact, Geometry, Material};
+    /// let c = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
+    /// let d = c.dimensionless(1e-9);
+    /// assert!((c.drag_crack_product() / (d.c_d * d.c_a) - 1.0).abs() < 1e-14);
+    /// # Ok::<(), contact::ContactError>(())
+    /// ```
+    pub fn drag_crack_product(&self) -> f64 {
+        let (e, nu, s0, t0) = (
+            self.e_star(),
+            self.material.poisson,
+            self.sigma0(),
+            self.t0(),
+        );
+        2.0 * e * e * self.gamma() * t0 * t0 / (nu * nu * self.m_star() * s0 * s0)
+    }
+
     /// Contact radius at first contact (delta = 0) where beta = (1 + eps) k:
     /// `a = [2 pi R^2 (1 + eps) k gamma / E*]^(1/3)` (m) (Section 4.1), for `k` and `eps` dimensionless.
     pub fn initial_contact_radius(&self, k: f64, eps: f64) -> f64 {

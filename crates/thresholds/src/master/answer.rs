@@ -343,10 +343,13 @@ pub(crate) fn from_table(
     if opts.rel_tol < TABLE_REL_TOL && opts.rel_tol != crate::DEFAULT_REL_TOL {
         return None;
     }
-    let d = contact.dimensionless(t_vis);
+    let c_d = contact.dimensionless(t_vis).c_d;
     let v_jkr = contact.v_stick_jkr();
     let v_max = opts.v_max_for(v_jkr);
-    let r = MasterTables::standard().ratios(d.c_d, d.c_a, law.k(), v_max / v_jkr)?;
+    // y from the product c_D c_a, not from c_D and c_a: the same bits at every T_vis of the
+    // contact, so that the end curves at (y, k) of an array at one radius are found once
+    let (x, y) = (c_d.log10(), contact.drag_crack_product().log10());
+    let r = MasterTables::standard().ratios_at(x, y, law.k(), v_max / v_jkr)?;
     Some(crate::StickingThresholds {
         t_vis,
         v_stick: r.v_stick.map(|f| f * v_jkr),

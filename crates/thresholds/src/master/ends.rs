@@ -17,14 +17,33 @@ use super::interp::uniform_weights;
 /// fuzz of the ends there (5e-7).
 pub const KINK_MARGIN: f64 = 0.01;
 
+/// What [`EndCurves::at`] was last asked on a thread: the curves' id and the bits of y and k.
+type Asked = (u64, u64, u64);
+
+thread_local! {
+    /// The last question [`EndCurves::at`] answered on this thread, and its answer.
+    static LAST_ENDS: std::cell::Cell<Option<(Asked, Option<Ends>)>> =
+        const { std::cell::Cell::new(None) };
+}
+
 /// The end curves, ready to interpolate.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct EndCurves {
+    /// Which curves these are, for the per-thread memo of [`EndCurves::at`]: an address can be
+    /// reused by other curves once these are dropped, an id is not.
+    id: u64,
     data: EndsData,
     /// ln of the first k.
     ln_k0: f64,
     /// k steps per unit of ln k.
     per_ln: f64,
+}
+
+/// Equal curves are equal data (whatever their ids).
+impl PartialEq for EndCurves {
+    fn eq(&self, other: &Self) -> bool {
+        self.data == other.data
+    }
 }
 
 /// x_s and x_on at one (y, k).
@@ -39,7 +58,9 @@ pub struct Ends {
 impl EndCurves {
     /// The interpolation form of `data`.
     pub fn new(data: EndsData) -> Self {
+        static NEXT_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
         Self {
+            id: NEXT_ID.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
             ln_k0: data.k0.ln(),
             per_ln: data.per_octave as f64 / std::f64::consts::LN_2,
             data,
@@ -68,7 +89,22 @@ impl EndCurves {
 
     /// The end curves at `(y, k)` by the bicubic interpolant of the grid; `None` outside the
     /// grid, where a value of the 4 x 4 stencil is missing, or next to a kink of the curves.
+    /// The last answer of each thread is kept: the elements of an array at one radius ask at
+    /// the same `(y, k)` (a sixth of a table answer, saved).
     pub fn at(&self, y: f64, k: f64) -> Option<Ends> {
+        let key = (self.id, y.to_bits(), k.to_bits());
+        if let Some((at, ends)) = LAST_ENDS.with(|c| c.get()) {
+            if at == key {
+                return ends;
+            }
+        }
+        let ends = self.interpolate(y, k);
+        LAST_ENDS.with(|c| c.set(Some((key, ends))));
+        ends
+    }
+
+    /// [`EndCurves::at`], computed.
+    fn interpolate(&self, y: f64, k: f64) -> Option<Ends> {
         let d = &self.data;
         let fy = (y - d.y0) / d.dy;
         let fk = (k.ln() - self.ln_k0) * self.per_ln;
@@ -113,5 +149,35 @@ impl EndCurves {
             x_s: s + KINK_MARGIN,
             x_on: o.max(s) + KINK_MARGIN,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::MasterTables;
+
+    /// The per-thread memo answers each set of curves with its own values: two curves asked
+    /// in turn at one (y, k), the second the first moved by 1 in x, stay 1 apart; and the
+    /// memo's answer is the interpolation's.
+    #[test]
+    fn the_memo_keeps_curves_apart() {
+        let Some(ends) = MasterTables::standard().ends() else {
+            return;
+        };
+        let mut moved = ends.data().clone();
+        moved.x_s.to_mut().iter_mut().for_each(|x| *x += 1.0);
+        moved.x_on.to_mut().iter_mut().for_each(|x| *x += 1.0);
+        let moved = EndCurves::new(moved);
+        let (y, k) = (-1.17, 0.01);
+        let direct = ends.interpolate(y, k).expect("inside the grid");
+        for _ in 0..3 {
+            let (a, b) = (ends.at(y, k).expect("a"), moved.at(y, k).expect("b"));
+            assert_eq!(a, direct);
+            assert!((b.x_s - a.x_s - 1.0).abs() < 1e-12 && (b.x_on - a.x_on - 1.0).abs() < 1e-12);
+        }
+        // clones are equal (the same data), and answer alike
+        assert_eq!(ends.clone(), *ends);
+        assert_eq!(ends.clone().at(y, k), Some(direct));
     }
 }

@@ -179,9 +179,11 @@ impl RestitutionTables {
         }
         let x = d.c_d.log10();
         let jkr = contact.v_stick_jkr();
+        // y as the master tables' answer takes it (from the product c_D c_a: the same bits at
+        // every T_vis), so that both give the same V_stick
         let (outcome, w) = self.rebound_at(
             x,
-            x + d.c_a.log10(),
+            contact.drag_crack_product().log10(),
             k,
             v_in / jkr,
             MasterTables::standard(),
