@@ -313,7 +313,8 @@ impl<const N: usize> Row<N> for ([f64; N], u8) {
 }
 
 /// Columns of f64 results, the `"method"` column (the code of the method that answered each
-/// element, where the rows carry it), and the warnings, as a dict of flat arrays.
+/// element, where the rows carry it), and the warnings, as a dict of flat arrays (of floats and
+/// an int method code for a `scalar` call: one row, every argument a float).
 pub fn columns<'py, const N: usize, R: Row<N>>(
     py: Python<'py>,
     names: [&str; N],

@@ -42,7 +42,7 @@ type Column<T> = (&'static str, fn(&T) -> Option<f64>);
 /// The elements of a threshold function: element `i` answers `f(i, contact, law)` (with its
 /// warnings); a dict of the `columns`, `"method"` and `"warnings"`. Each element's answer is
 /// reduced to its row of columns and method code where it is computed, so that a million
-/// elements from the tables move 41 bytes each, not the whole answer.
+/// elements from the tables move a few tens of bytes each, not the whole answer.
 fn per_element<'py, T: Answer, const N: usize>(
     py: Python<'py>,
     e: &Elements<'_>,
