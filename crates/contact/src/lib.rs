@@ -39,16 +39,18 @@
 //! Materials (Section 3): [`Material::co2`] (E and nu from sound speeds) and [`Material::h2o`], or
 //! a JSON file with the fields `gamma_sv`, `young`, `poisson`, `density`.
 
+pub mod dimensionless;
 pub mod error;
 pub mod geometry;
 pub mod material;
 pub mod pair;
 
+pub use dimensionless::Dimensionless;
 pub use error::ContactError;
 pub use geometry::Geometry;
 pub use material::{elastic_from_sound_speeds, Material, PRESETS};
 pub use numerics::OutOfRange;
 pub use pair::{
-    Contact, Dimensionless, Warning, JKR_QUANTITIES, PLAUSIBLE_RADIUS, PLAUSIBLE_SPEED_MAX,
-    SURFACE_FORCE_RANGE, TABOR_MIN,
+    Contact, Warning, JKR_QUANTITIES, PLAUSIBLE_RADIUS, PLAUSIBLE_SPEED_MAX, SURFACE_FORCE_RANGE,
+    TABOR_MIN,
 };

@@ -371,12 +371,6 @@ impl Contact {
         2.0 * self.drag_time(t_vis) * self.e_star() * a * delta_dot
     }
 
-    /// The drag coefficient A = T_vis / nu^2 (s) for relaxation time `t_vis` (s).
-    pub fn drag_time(&self, t_vis: f64) -> f64 {
-        let nu = self.material.poisson;
-        t_vis / (nu * nu)
-    }
-
     /// Elastic strain energy U_E(a, delta) (J) (Section 2.1), written as
     /// `E* a [(delta - a^2/(3R))^2 + 4 a^4 / (45 R^2)]`, which is the paper's expression and shows U_E > 0.
     pub fn u_e(&self, a: f64, delta: f64) -> f64 {
@@ -410,18 +404,6 @@ impl Contact {
         self.g_eff(a, delta) / self.gamma()
     }
 
-    /// Attractive stress across the crack sigma0 = gamma / epsilon (Pa) (Section 2.3).
-    pub fn sigma0(&self) -> f64 {
-        self.gamma() / self.epsilon
-    }
-
-    /// The crack-speed unit `E* gamma / (sigma0^2 T_vis)` (m/s): `a_dot = v(k, beta)` times this,
-    /// for relaxation time `t_vis` (s, > 0) (Section 2.3).
-    pub fn crack_speed_unit(&self, t_vis: f64) -> f64 {
-        let s0 = self.sigma0();
-        self.e_star() * self.gamma() / (s0 * s0 * t_vis)
-    }
-
     /// The JKR time unit `t0 = sqrt(m* delta_eq / F0)`, `F0 = 3 pi gamma R = 2 F_crit` (s): the
     /// time of the collision equations in JKR units (`docs/model.md`).
     pub fn t0(&self) -> f64 {
@@ -433,73 +415,10 @@ impl Contact {
         (self.m_star() * self.delta_eq() / f0).sqrt()
     }
 
-    /// The two dimensionless numbers of a collision at relaxation time `t_vis` (s, > 0): in JKR
-    /// units the collision depends only on them, on k and on eps, so V_stick / V_stick,JKR is a
-    /// function of `(c_D, c_a)` for every material, size and geometry (Sections 2.3-2.6):
-    /// ```text
-    /// c_D = 2 (T_vis/nu^2) E* a_eq t0 / m*          (drag)
-    /// c_a = E* gamma t0 / (sigma0^2 T_vis a_eq)       (crack speed)
-    /// ```
-    /// `c_D` grows with T_vis and `c_a` falls as 1/T_vis; their product does not depend on
-    /// T_vis or on the density.
-    ///
-    /// # Example
-    /// ```
-    /// use contact::{Contact, Geometry, Material};
-    /// let c = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
-    /// let (a, b) = (c.dimensionless(1e-9), c.dimensionless(2e-9));
-    /// assert!((b.c_d / a.c_d - 2.0).abs() < 1e-12 && (b.c_a / a.c_a - 0.5).abs() < 1e-12);
-    /// // four times the density at twice T_vis: the same collision
-    /// let dense = Contact::new(Material { density: 4.0 * 1560.0, ..Material::co2() }, Geometry::identical(60e-6))?;
-    /// let d = dense.dimensionless(2e-9);
-    /// assert!((d.c_d / a.c_d - 1.0).abs() < 1e-12 && (d.c_a / a.c_a - 1.0).abs() < 1e-12);
-    /// # Ok::<(), contact::ContactError>(())
-    /// ```
-    pub fn dimensionless(&self, t_vis: f64) -> Dimensionless {
-        let (a_eq, t0) = (self.a_eq(), self.t0());
-        Dimensionless {
-            c_d: 2.0 * self.drag_time(t_vis) * self.e_star() * a_eq * t0 / self.m_star(),
-            c_a: self.crack_speed_unit(t_vis) * t0 / a_eq,
-        }
-    }
-
-    /// The product c_D c_a of [`Contact::dimensionless`] (dimensionless), which does not depend
-    /// on T_vis: `c_D c_a = 2 E*^2 gamma t0^2 / (nu^2 m* sigma0^2)`. The master tables' second
-    /// axis y = log10(c_D c_a) taken from it is the same to the bit at every T_vis of a contact,
-    /// so that an array at one radius finds its place along y once.
-    ///
-    /// # Example
-    /// ```
-    /// use contact::{Contact, Geometry, Material};
-    /// let c = Contact::new(Material::co2(), Geometry::identical(60e-6))?;
-    /// let d = c.dimensionless(1e-9);
-    /// assert!((c.drag_crack_product() / (d.c_d * d.c_a) - 1.0).abs() < 1e-14);
-    /// # Ok::<(), contact::ContactError>(())
-    /// ```
-    pub fn drag_crack_product(&self) -> f64 {
-        let (e, nu, s0, t0) = (
-            self.e_star(),
-            self.material.poisson,
-            self.sigma0(),
-            self.t0(),
-        );
-        2.0 * e * e * self.gamma() * t0 * t0 / (nu * nu * self.m_star() * s0 * s0)
-    }
-
     /// Contact radius at first contact (delta = 0) where beta = (1 + eps) k:
     /// `a = [2 pi R^2 (1 + eps) k gamma / E*]^(1/3)` (m) (Section 4.1), for `k` and `eps` dimensionless.
     pub fn initial_contact_radius(&self, k: f64, eps: f64) -> f64 {
         let r = self.reduced_radius();
         (2.0 * PI * r * r * (1.0 + eps) * k * self.gamma() / self.e_star()).cbrt()
     }
-}
-
-/// The two dimensionless numbers of a collision ([`Contact::dimensionless`]).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Dimensionless {
-    /// The drag number c_D = 2 (T_vis/nu^2) E* a_eq t0 / m* (dimensionless).
-    pub c_d: f64,
-    /// The crack-speed number c_a = E* gamma t0 / (sigma0^2 T_vis a_eq) (dimensionless), the
-    /// `lambda` of the collision equations.
-    pub c_a: f64,
 }
