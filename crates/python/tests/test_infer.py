@@ -180,28 +180,41 @@ def test_simulation_based_calibration_with_restitution():
 
 
 @pytest.mark.parametrize("ndim", [1, 2])
-def test_the_snooker_move_keeps_its_target(ndim):
-    # the sampler's snooker move alone on a normal of known moments (synthetic truth: unit
-    # variances, correlation 0.8 in 2-d): emcee 3.1.6's own move gives a variance of 1.09 here
-    # in 1-d (12 standard errors off); ours must be within 4 standard errors (about 0.01 each
-    # for 32 walkers x 2500 steps at an autocorrelation time of 4.5-9 steps)
-    import emcee
-
-    from stickiness._moves import SnookerMove
+@pytest.mark.parametrize("snooker_share", [0.0, 0.2, 1.0])
+def test_the_sampler_keeps_its_target(ndim, snooker_share):
+    # the sampler (differential evolution alone, the mixture st.infer uses, the snooker alone)
+    # on a normal of known moments (synthetic truth: unit variances, correlation 0.8 in 2-d):
+    # emcee 3.1.6's own snooker move gives a variance of 1.09 here in 1-d (12 standard errors
+    # off); ours must be within 4 standard errors (about 0.01 each for 32 walkers x 2500 steps
+    # at an autocorrelation time of 4.5-9 steps)
+    from stickiness._sampler import sample
 
     cov = np.array([[1.0, 0.8], [0.8, 1.0]])[:ndim, :ndim]
     icov = np.linalg.inv(cov)
-    sampler = emcee.EnsembleSampler(
-        32, ndim, lambda th: -0.5 * np.einsum("ij,jk,ik->i", th, icov, th), vectorize=True,
-        moves=[(SnookerMove(), 1.0)],
-    )
-    start = np.random.default_rng(0).normal(0.0, 1.0, (32, ndim))
-    state = emcee.State(start, random_state=np.random.RandomState(1).get_state())
-    sampler.run_mcmc(state, 3000 if ndim == 1 else 5000)
-    x = sampler.get_chain(discard=500, flat=True)
+
+    def log_prob(th):
+        return -0.5 * np.einsum("ij,jk,ik->i", th, icov, th)
+
+    rng = np.random.default_rng(1)
+    start = rng.normal(0.0, 1.0, (32, ndim))
+    run = sample(log_prob, start, log_prob(start), 3000 if ndim == 1 else 5000, rng,
+                 snooker_share)
+    x = run.chain[500:].reshape(-1, ndim)
     found = np.atleast_2d(np.cov(x.T))
     np.testing.assert_allclose(found, cov, atol=0.05 if ndim == 2 else 0.04)
+    np.testing.assert_allclose(np.mean(x, axis=0), 0.0, atol=0.05)
     assert abs(np.mean(np.abs(x[:, 0]) < 1.0) - 0.6827) < 0.015
+    # the log-probabilities kept are those of the positions kept
+    np.testing.assert_allclose(run.log_prob[-1], log_prob(run.chain[-1]))
+    assert 0.1 < np.mean(run.acceptance_fraction) < 0.9
+
+
+def test_the_sampler_needs_four_walkers():
+    from stickiness._sampler import sample
+
+    with pytest.raises(ValueError, match="walkers"):
+        sample(lambda th: -th[:, 0] ** 2, np.zeros((3, 1)), np.zeros(3), 10,
+               np.random.default_rng(0), 0.2)
 
 
 def test_the_same_seed_gives_the_same_chain():

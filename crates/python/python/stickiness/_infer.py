@@ -1,9 +1,10 @@
 """The posterior of T_vis (and gamma_SV) from laboratory data: :func:`infer`.
 
-Bayes' theorem with the likelihood of :mod:`._likelihood`, log-uniform priors, and emcee's
-affine-invariant ensemble sampler (Foreman-Mackey et al. 2013) walking in log10 of the
-parameters. emcee, pandas (and corner, for plots) are the optional extra
-``stickiness[infer]``; importing :mod:`stickiness` never needs them.
+Bayes' theorem with the likelihood of :mod:`._likelihood`, log-uniform priors, and an ensemble
+sampler (:mod:`._sampler`: emcee's red-blue scheme with differential-evolution and snooker
+moves) walking in log10 of the parameters; emcee's integrated autocorrelation time judges the
+chain. emcee, pandas (and corner, for plots) are the optional extra ``stickiness[infer]``;
+importing :mod:`stickiness` never needs them.
 """
 
 from __future__ import annotations
@@ -19,10 +20,11 @@ from ._args import StickinessWarning
 from ._core import DEFAULT_K, DEFAULT_RADIUS, DEFAULT_REL_TOL
 from ._likelihood import PARAMETERS, Data, Model, priors as _priors
 from ._posterior import Posterior
+from ._sampler import MIN_WALKERS, sample
 from ._sizes import SizeDistribution
 
-#: Default ensemble size: 32 walkers, the issue's speed target (emcee needs at least twice the
-#: number of free parameters).
+#: Default ensemble size: 32 walkers, the issue's speed target (at least twice the number of
+#: free parameters, so that the differences of walkers span the parameter space).
 DEFAULT_WALKERS = 32
 #: Default chain length (steps per walker); a quarter is discarded as burn-in by default.
 DEFAULT_STEPS = 2000
@@ -33,7 +35,7 @@ MAX_WALKERS = 100_000
 #: 50 integrated autocorrelation times gives an unreliable estimate of the time itself.
 MIN_AUTOCORR_TIMES = 50.0
 
-#: The share of emcee's snooker moves among its differential-evolution moves (emcee's
+#: The share of snooker moves among the differential-evolution moves (emcee's
 #: documentation, "Using different moves", uses 20 %).
 SNOOKER_SHARE = 0.2
 
@@ -256,7 +258,7 @@ def infer(
     wall : bool, optional
         A sphere hitting a flat wall of the same material. Default False.
     walkers : int, optional
-        emcee walkers (>= 2 per free parameter). Default 32.
+        Walkers of the ensemble (at least 4, and 2 per free parameter). Default 32.
     steps : int, optional
         Steps per walker. Default 2000.
     burn : int, optional
@@ -264,7 +266,7 @@ def infer(
     seed : int, optional
         Seed of the starting points and the sampler: the same seed, the same chain.
     progress : bool, optional
-        Show emcee's progress bar (needs tqdm). Default False.
+        Show a progress bar (tqdm's, on stderr). Default False.
     method : {'table', 'search'}, optional
         How V_stick is computed: the master table (microseconds; the exact search where the
         table cannot vouch for 1e-5) or always the search. Default ``'table'``.
@@ -338,7 +340,7 @@ def infer(
         raise ValueError("t_vis: a fixed value and free=('t_vis', ...) exclude each other")
     if "gamma_sv" not in free:
         fixed["gamma_sv"] = material.gamma_sv
-    walkers = _count("walkers", walkers, 2 * len(free), MAX_WALKERS)
+    walkers = _count("walkers", walkers, max(MIN_WALKERS, 2 * len(free)), MAX_WALKERS)
     steps = _count("steps", steps, 1)
     burn = steps // 4 if burn is None else _count("burn", burn, 0)
     if burn >= steps:
@@ -373,17 +375,10 @@ def infer(
     # differential evolution with snooker updates (ter Braak & Vrugt 2008): on the curved
     # ridge along which T_vis and gamma_SV trade off (H2O, 9.6 m/s at 1.5 um; 32 walkers, 3000
     # steps) its autocorrelation times are 55 steps against 150 for emcee's default stretch
-    # move, and 1-d posteriors lose nothing. The snooker is ours: emcee's is biased (_moves)
-    from ._moves import SnookerMove
-
-    moves = [(emcee.moves.DEMove(), 1.0 - SNOOKER_SHARE), (SnookerMove(), SNOOKER_SHARE)]
-    sampler = emcee.EnsembleSampler(walkers, len(free), log_prob, moves=moves, vectorize=True)
-    state = emcee.State(
-        start, log_prob=lp0,
-        random_state=np.random.RandomState(int(rng.integers(2**32))).get_state(),
-    )
-    sampler.run_mcmc(state, steps, progress=progress)
-    chain = sampler.get_chain()
+    # move, and 1-d posteriors lose nothing. Our own loop and snooker (_sampler, _moves): emcee's
+    # loop costs more than the likelihood, its snooker is biased
+    run = sample(log_prob, start, lp0, steps, rng, SNOOKER_SHARE, progress)
+    chain = run.chain
     tau = emcee.autocorr.integrated_time(chain[burn:], tol=0)
     if steps - burn < MIN_AUTOCORR_TIMES * float(np.max(tau)):
         warnings.warn(
@@ -395,7 +390,7 @@ def infer(
         )
     return Posterior(
         chain=10.0 ** chain,
-        log_prob_chain=sampler.get_log_prob(),
+        log_prob_chain=run.log_prob,
         burn=burn,
         free=free,
         priors=bounds,
@@ -405,6 +400,6 @@ def infer(
         k=k,
         method=method,
         autocorr_time={p: float(tau[i]) for i, p in enumerate(free)},
-        acceptance_fraction=float(np.mean(sampler.acceptance_fraction)),
+        acceptance_fraction=float(np.mean(run.acceptance_fraction)),
     )
 
