@@ -21,7 +21,7 @@ band) and an .npz of the final states, and prints the numbers the documentation 
     python examples/dustpy/case_study.py --replot     # the figures from the saved .npz
     python examples/dustpy/case_study.py --resume     # go on from the runs' last checkpoints
 
-Needs DustPy (``pip install dustpy``, which needs gfortran), emcee and matplotlib. DustPy
+Needs DustPy (``pip install dustpy``, which needs gfortran), pandas and matplotlib. DustPy
 works in cgs: V_frag enters it in cm/s (``stickiness.dustpy`` converts). The cost on 2 cores
 is in docs/performance.md ("DustPy case study").
 """

@@ -15,11 +15,17 @@ pub fn batch() -> usize {
     (rayon::current_num_threads() * ELEMENTS_PER_THREAD).max(1)
 }
 
-/// The elements are first computed one after the other on the calling thread for up to this
-/// long: answers from the master tables take a microsecond, and an array of a few hundred of
-/// them is done before the thread pool would have started (64 elements: 50 us instead of
-/// 140 us). The first slow element (a search: milliseconds) ends this start.
-const SEQUENTIAL_START: Duration = Duration::from_micros(500);
+/// The elements are first computed one after the other on the calling thread for at least
+/// this long: answers from the master tables take a microsecond, and an array of a few dozen of
+/// them is done before the thread pool would have woken (64 elements: 50 us instead of
+/// 140 us).
+const SEQUENTIAL_PROBE: Duration = Duration::from_micros(50);
+
+/// After the probe the rest is also computed on the calling thread if it would take less than
+/// this at the rate seen so far: waking the pool costs 50-90 us, so only a longer rest is worth
+/// sharing (an inference step's 1024 table answers, 0.5 ms: 0.3 ms on two cores). The first
+/// slow element (a search: milliseconds) ends the start.
+const SEQUENTIAL_REST: Duration = Duration::from_micros(250);
 
 /// After the start, a chunk holds about this much work on every core (from the rate measured
 /// so far), so that Ctrl-C is checked every few tens of milliseconds whatever an element costs.
@@ -28,8 +34,8 @@ const CHUNK_TIME: Duration = Duration::from_millis(20);
 /// The most elements in one chunk.
 const MAX_CHUNK: usize = 1 << 20;
 
-/// `f(0), ..., f(n - 1)` with the GIL released: first one after the other for up to
-/// [`SEQUENTIAL_START`], then the rest on all cores in chunks with a check for signals (Ctrl-C
+/// `f(0), ..., f(n - 1)` with the GIL released: first one after the other for
+/// [`SEQUENTIAL_PROBE`] (and on to the end if the rest is shorter than [`SEQUENTIAL_REST`]), then the rest on all cores in chunks with a check for signals (Ctrl-C
 /// raises `KeyboardInterrupt`) after each; the first error in index order is returned.
 pub fn map<T, F>(py: Python<'_>, n: usize, f: F) -> PyResult<Vec<T>>
 where
@@ -40,7 +46,14 @@ where
     let began = Instant::now();
     let first: Vec<Result<T, Error>> = py.detach(|| {
         let mut done = Vec::new();
-        while done.len() < n && began.elapsed() < SEQUENTIAL_START {
+        while done.len() < n {
+            let elapsed = began.elapsed();
+            if elapsed >= SEQUENTIAL_PROBE {
+                let per_element = elapsed.as_secs_f64() / done.len().max(1) as f64;
+                if per_element * (n - done.len()) as f64 >= SEQUENTIAL_REST.as_secs_f64() {
+                    break;
+                }
+            }
             let r = f(done.len());
             let failed = r.is_err();
             done.push(r);

@@ -217,6 +217,23 @@ def test_the_sampler_needs_four_walkers():
                np.random.default_rng(0), 0.2)
 
 
+@pytest.mark.parametrize("rows, radii, speeds", [(16, 64, 300), (3, 1, 5), (5, 7, 1)])
+def test_the_stuck_probability_is_the_weight_of_the_faster_thresholds(rows, radii, speeds):
+    # its definition, by brute force: P(stuck | v) = sum of w(R) over the radii with
+    # v < V_stick(R) (a tie sticks not; an infinite V_stick sticks at every speed)
+    from stickiness._likelihood import stuck_probability
+
+    rng = np.random.default_rng(rows + radii + speeds)
+    vs = 10 ** rng.uniform(-3, 0, (rows, radii))
+    vs[0, 0] = np.inf
+    v = 10 ** rng.uniform(-3, 0, speeds)
+    v[0] = vs[-1, 0]
+    w = rng.random(radii)
+    w /= w.sum()
+    brute = (w[None, :, None] * (v[None, None, :] < vs[:, :, None])).sum(axis=1)
+    np.testing.assert_allclose(stuck_probability(vs, w, v), np.minimum(brute, 1.0), atol=1e-15)
+
+
 def test_the_same_seed_gives_the_same_chain():
     a = st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=100, seed=4)
     b = st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=100, seed=4)
@@ -286,20 +303,49 @@ def test_a_progress_bar_when_asked(capsys):
     assert "20/20" in capsys.readouterr().err  # tqdm's bar on stderr
 
 
-def test_importing_stickiness_needs_no_emcee():
+def test_inference_needs_no_emcee_and_says_what_it_needs():
     import subprocess
     import sys
 
     code = (
         "import sys; sys.modules['emcee'] = None; sys.modules['corner'] = None\n"
-        "import stickiness as st\n"
+        "import warnings, stickiness as st\n"
+        "warnings.simplefilter('ignore')\n"
+        "print(st.infer('co2', 60e-6, v_stick=(0.04, 0.02), walkers=8, steps=20, seed=1))\n"
+        "sys.modules['pandas'] = None\n"
         "try:\n"
         "    st.infer('co2', 60e-6, v_stick=(0.04, 0.02))\n"
         "except ImportError as e:\n"
         "    print(e)\n"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert "Posterior(" in out.stdout, out.stderr
     assert "pip install 'stickiness[infer]'" in out.stdout, out.stderr
+
+
+@pytest.mark.parametrize("phi", [0.0, 0.5, 0.9])
+def test_the_autocorrelation_time_of_an_ar1_chain(phi):
+    # synthetic truth: x_t = phi x_(t-1) + sqrt(1 - phi^2) e_t has tau = (1 + phi)/(1 - phi);
+    # and emcee's integrated_time, an independent implementation, agrees to rounding
+    import emcee
+
+    from stickiness._sampler import integrated_time
+
+    rng = np.random.default_rng(7)
+    e = rng.standard_normal((20000, 32, 2))
+    x = np.empty_like(e)
+    x[0] = e[0]
+    for t in range(1, len(x)):
+        x[t] = phi * x[t - 1] + math.sqrt(1 - phi**2) * e[t]
+    tau = integrated_time(x)
+    truth = (1 + phi) / (1 - phi)
+    # within 4 standard errors: var(tau)/tau^2 = 2 (2 M + 1)/N at the window M = 5 tau (Sokal
+    # 1997, eq. 3.19), N the 640 000 samples (2.4 % at phi = 0.9)
+    se = math.sqrt(2 * (10 * truth + 1) / e[:, :, 0].size)
+    np.testing.assert_allclose(tau, truth, rtol=4.0 * se)
+    np.testing.assert_allclose(tau, emcee.autocorr.integrated_time(x, tol=0), rtol=1e-12)
+    # a chain that never moved is perfectly correlated, not a division by zero
+    assert np.all(np.isinf(integrated_time(np.ones((100, 8, 2)))))
 
 
 def _data(kinds):

@@ -2,9 +2,9 @@
 
 Bayes' theorem with the likelihood of :mod:`._likelihood`, log-uniform priors, and an ensemble
 sampler (:mod:`._sampler`: emcee's red-blue scheme with differential-evolution and snooker
-moves) walking in log10 of the parameters; emcee's integrated autocorrelation time judges the
-chain. emcee, pandas (and corner, for plots) are the optional extra ``stickiness[infer]``;
-importing :mod:`stickiness` never needs them.
+moves) walking in log10 of the parameters; the integrated autocorrelation time (as emcee
+computes it) judges the chain. pandas (and corner, for plots) are the optional extra
+``stickiness[infer]``; importing :mod:`stickiness` never needs them.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from ._args import StickinessWarning
 from ._core import DEFAULT_K, DEFAULT_RADIUS, DEFAULT_REL_TOL
 from ._likelihood import PARAMETERS, Data, Model, priors as _priors
 from ._posterior import Posterior
-from ._sampler import MIN_WALKERS, sample
+from ._sampler import MIN_WALKERS, integrated_time, sample
 from ._sizes import SizeDistribution
 
 #: Default ensemble size: 32 walkers, the issue's speed target (at least twice the number of
@@ -58,15 +58,14 @@ SEED_GAMMAS = 8
 DEFAULT_T_VIS_CHECK = 1e-9
 
 
-def _import_emcee() -> Any:
+def _require_pandas() -> None:
+    """pandas, which the posterior's samples are, or an ``ImportError`` saying how to get it."""
     try:
-        import emcee  # type: ignore[import-untyped,unused-ignore]
         import pandas  # type: ignore[import-untyped,unused-ignore]  # noqa: F401
     except ImportError:
         raise ImportError(
-            "stickiness.infer needs emcee and pandas: pip install 'stickiness[infer]'"
+            "stickiness.infer needs pandas: pip install 'stickiness[infer]'"
         ) from None
-    return emcee
 
 
 def _free(value: Any) -> Tuple[str, ...]:
@@ -289,7 +288,7 @@ def infer(
         the wrong order, ... (the message names the argument); data impossible for every
         parameter within the priors.
     ImportError
-        emcee or pandas missing: ``pip install 'stickiness[infer]'``.
+        pandas missing: ``pip install 'stickiness[infer]'``.
 
     Warns
     -----
@@ -314,7 +313,7 @@ def infer(
     >>> post.interval("t_vis", level=0.95)                                      # doctest: +SKIP
     (1.5e-16, 1.9e-09)
     """
-    emcee = _import_emcee()
+    _require_pandas()
     material = _args.material(material)
     sizes = _sizes(radius)
     wall = _args.geometry(radius2, wall)
@@ -379,7 +378,7 @@ def infer(
     # loop costs more than the likelihood, its snooker is biased
     run = sample(log_prob, start, lp0, steps, rng, SNOOKER_SHARE, progress)
     chain = run.chain
-    tau = emcee.autocorr.integrated_time(chain[burn:], tol=0)
+    tau = integrated_time(chain[burn:])
     if steps - burn < MIN_AUTOCORR_TIMES * float(np.max(tau)):
         warnings.warn(
             f"the chain after burn-in ({steps - burn} steps) is shorter than "

@@ -9,7 +9,9 @@ log-probability for all its walkers, Metropolis-Hastings acceptance with the mov
 That is emcee's ``EnsembleSampler.run_mcmc`` with its ``DEMove`` and our snooker move, step for
 step; emcee's own loop costs 0.5-0.75 ms a step on this machine (32 walkers, one parameter, no
 likelihood: 1.05-1.48 s for 2000 steps), more than the paper's CO2 posterior asks of its whole
-run (`docs/performance.md`, "Inference"), and this one about a tenth of it.
+run (`docs/performance.md`, "Inference"), and this one a quarter of it. The chain is judged by
+its integrated autocorrelation time, computed as emcee computes it (:func:`integrated_time`),
+so that sampling needs no emcee (whose import, through scipy.stats, costs 1.5 s).
 """
 
 from __future__ import annotations
@@ -23,6 +25,10 @@ from ._moves import DE_SPLITS, SNOOKER_SPLITS, de_proposal, snooker_proposal
 
 #: The fewest walkers the moves work with: each of the snooker's four sub-ensembles needs one.
 MIN_WALKERS = SNOOKER_SPLITS
+
+#: Sokal's window for the integrated autocorrelation time: the smallest M with M >= c tau(M),
+#: c = 5 (Sokal 1997; emcee's ``autocorr.integrated_time`` default, which this follows).
+AUTOCORR_WINDOW = 5.0
 
 Proposal = Callable[[np.ndarray, List[np.ndarray], Any], Tuple[np.ndarray, np.ndarray]]
 
@@ -104,3 +110,33 @@ def sample(
     if bar is not None:
         bar.close()
     return Chains(chain, lps, accepted / max(steps, 1))
+
+
+def integrated_time(chain: np.ndarray) -> np.ndarray:
+    """The integrated autocorrelation time (steps) of each parameter of ``chain`` (steps x
+    walkers x parameters): the normalised autocorrelation function of each walker (by FFT,
+    zero-padded to a power of two), averaged over the walkers, summed as tau(M) = 1 + 2
+    sum_{t=1}^{M} rho(t) up to Sokal's window (the smallest M >= :data:`AUTOCORR_WINDOW`
+    tau(M)); emcee's ``autocorr.integrated_time`` (Foreman-Mackey et al. 2013, Section 3 of
+    its documentation's "Autocorrelation analysis"), with a walker that never moved counted
+    as perfectly correlated (``inf``) instead of dividing by zero."""
+    steps = chain.shape[0]
+    n = 1 << max(steps - 1, 1).bit_length()
+    x = chain - chain.mean(axis=0)
+    f = np.fft.rfft(x, n=2 * n, axis=0)
+    acf = np.fft.irfft(f * np.conjugate(f), axis=0)[:steps]
+    var = acf[0]
+    frozen = var <= 0.0
+    with np.errstate(invalid="ignore", divide="ignore"):
+        rho = np.where(frozen, 1.0, acf / np.where(frozen, 1.0, var))
+    # averaged over the walkers: steps x parameters
+    taus = 2.0 * np.cumsum(rho.mean(axis=1), axis=0) - 1.0
+    out = np.empty(taus.shape[1])
+    for d in range(taus.shape[1]):
+        if np.all(frozen[:, d]):
+            out[d] = np.inf
+            continue
+        short = np.arange(steps) < AUTOCORR_WINDOW * taus[:, d]
+        window = int(np.argmin(short)) if np.any(short) and not np.all(short) else steps - 1
+        out[d] = taus[window, d]
+    return out
