@@ -66,6 +66,10 @@ enum Command {
         /// Only the tables of these indices (k = 0.005 2^(i/3)), without the k cells.
         #[arg(long, value_delimiter = ',')]
         only: Vec<usize>,
+        /// Only the k cells (the checks between tables of neighbouring k), on the committed
+        /// tables: what a table built with `--only` leaves to do.
+        #[arg(long, conflicts_with_all = ["only", "check"])]
+        k_cells: bool,
     },
     /// Build the Python package's wheel (maturin, PyO3's stable ABI: one wheel for every
     /// CPython 3.9 or newer on this platform, checked for manylinux compliance) into
@@ -98,9 +102,15 @@ fn main() -> ExitCode {
         Command::Wheel { profile } => xtask::wheel::build(&workspace_root(), &profile).map(|w| {
             println!("{}", w.display());
         }),
-        Command::RestitutionTable { check, only } => {
+        Command::RestitutionTable {
+            check,
+            only,
+            k_cells,
+        } => {
             if check {
                 xtask::restitution_table::run_check(&workspace_root())
+            } else if k_cells {
+                xtask::restitution_table::run_k_cells(&workspace_root())
             } else {
                 xtask::restitution_table::run_build(&workspace_root(), &only)
             }

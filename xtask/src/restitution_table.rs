@@ -1,4 +1,4 @@
-//! `cargo xtask restitution-table [--check]`: build the restitution tables (V_out and e of
+//! `cargo xtask restitution-table [--check | --only I,.. | --k-cells]`: build the restitution tables (V_out and e of
 //! single collisions over the dimensionless numbers, k and the impact speed) from the ODE and
 //! write them to `crates/thresholds/data/restitution_k<k>.csv`, or recompute a sample of their
 //! values and fail if the model no longer gives them. They stand on the committed master
@@ -75,13 +75,31 @@ pub fn run_build(root: &Path, only: &[usize]) -> Result<(), Error> {
         progress(&format!("wrote {}", table_path(root, t.k).display()));
     }
     if only.is_empty() {
-        let mut tables = committed(root)?;
-        k_cells(&cfg, &mut tables, masters, &progress)?;
-        for t in &tables {
-            std::fs::write(table_path(root, t.k), to_text(t))?;
-        }
-        progress("wrote the k cells");
+        write_k_cells(root, &cfg, &progress)?;
     }
+    Ok(())
+}
+
+/// Fills the k cells of the committed tables and writes them (`--k-cells`: the tables
+/// themselves untouched).
+pub fn run_k_cells(root: &Path) -> Result<(), Error> {
+    let start = Instant::now();
+    let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
+    write_k_cells(root, &BuildConfig::standard(), &progress)
+}
+
+/// The k cells of the committed tables, computed and written.
+fn write_k_cells(
+    root: &Path,
+    cfg: &BuildConfig,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<(), Error> {
+    let mut tables = committed(root)?;
+    k_cells(cfg, &mut tables, MasterTables::standard(), progress)?;
+    for t in &tables {
+        std::fs::write(table_path(root, t.k), to_text(t))?;
+    }
+    progress("wrote the k cells");
     Ok(())
 }
 

@@ -1,7 +1,8 @@
 //! How much of the restitution the tables answer, how fast and how well: random collisions of
 //! the "Instant everywhere" domain (random materials, sizes, geometries, T_vis) with bouncing
-//! below the search limit, at the k of the committed restitution tables, impact speeds on both
-//! sides of V_stick (`examples/common/domain.rs`).
+//! below the search limit, k log-uniform over the committed restitution tables' range (once
+//! their k cells are built; else one of their own k), impact speeds on both sides of V_stick
+//! (`examples/common/domain.rs`).
 //!
 //! ```sh
 //! cargo run --release -p thresholds --example restitution_accuracy -- 100000 2000
@@ -35,7 +36,11 @@ fn main() {
     let mut cases = Vec::with_capacity(n);
     while cases.len() < n {
         let p = draw(&mut rng, false);
-        let k = ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)];
+        let k = if tables.k_checked() {
+            rng.log_uniform(ks[0], ks[ks.len() - 1])
+        } else {
+            ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+        };
         let law = CrackLaw::new(k).unwrap();
         let opts = SearchOptions::default();
         let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {
@@ -55,8 +60,13 @@ fn main() {
         .collect();
     let elapsed = start.elapsed().as_secs_f64();
     let answered = answers.iter().filter(|a| a.is_some()).count();
+    let ks = if tables.k_checked() {
+        format!("log-uniform over {} - {}", ks[0], ks[ks.len() - 1])
+    } else {
+        format!("{ks:?}")
+    };
     println!(
-        "{n} random collisions (k = {ks:?}): the tables answered {answered} ({:.2} %) in {elapsed:.3} s, one thread ({:.2} us each)",
+        "{n} random collisions (k {ks}): the tables answered {answered} ({:.2} %) in {elapsed:.3} s, one thread ({:.2} us each)",
         100.0 * answered as f64 / n as f64,
         1e6 * elapsed / n as f64
     );

@@ -32,7 +32,12 @@ fn random_collisions_agree_with_the_ode() {
     while tried < 400 {
         let p = domain::draw(&mut rng, false);
         let ks = tables.table_k();
-        let k = ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)];
+        // every k of the tables' range once the k cells are built, else the tables' own
+        let k = if tables.k_checked() {
+            rng.log_uniform(ks[0], ks[ks.len() - 1])
+        } else {
+            ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+        };
         let law = CrackLaw::new(k).unwrap();
         let opts = SearchOptions::default();
         let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {

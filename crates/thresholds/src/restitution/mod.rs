@@ -152,6 +152,17 @@ impl RestitutionTables {
         &self.k
     }
 
+    /// Whether the k cells (the checks between tables of neighbouring k) are built for every
+    /// interval, so that every k between the first and the last table is answered (else only
+    /// the tables' own k).
+    pub fn k_checked(&self) -> bool {
+        self.k.len() >= 4
+            && (0..self.k.len() - 1).all(|i| {
+                self.table(i)
+                    .is_some_and(|t| t.rows.iter().any(|r| !r.kcells.is_empty()))
+            })
+    }
+
     /// Table `i`.
     pub fn table(&self, i: usize) -> Option<&Table> {
         self.tables
