@@ -36,11 +36,7 @@ fn main() {
     let mut cases = Vec::with_capacity(n);
     while cases.len() < n {
         let p = draw(&mut rng, false);
-        let k = if tables.k_checked() {
-            rng.log_uniform(ks[0], ks[ks.len() - 1])
-        } else {
-            ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
-        };
+        let k = rng.restitution_k();
         let law = CrackLaw::new(k).unwrap();
         let opts = SearchOptions::default();
         let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {

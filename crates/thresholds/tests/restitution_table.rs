@@ -31,13 +31,8 @@ fn random_collisions_agree_with_the_ode() {
     let (mut tried, mut answered) = (0, 0);
     while tried < 400 {
         let p = domain::draw(&mut rng, false);
-        let ks = tables.table_k();
         // every k of the tables' range once the k cells are built, else the tables' own
-        let k = if tables.k_checked() {
-            rng.log_uniform(ks[0], ks[ks.len() - 1])
-        } else {
-            ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
-        };
+        let k = rng.restitution_k();
         let law = CrackLaw::new(k).unwrap();
         let opts = SearchOptions::default();
         let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {

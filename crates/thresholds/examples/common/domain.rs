@@ -2,6 +2,7 @@
 //! `examples/table_accuracy.rs` (which measures the master tables there) and
 //! `tests/master_table.rs` (which holds them to the search there; it includes this file).
 
+use thresholds::restitution::RestitutionTables;
 use thresholds::{Contact, Geometry, MasterTables, Material};
 
 /// SplitMix64: a small deterministic generator, so that a run is repeatable.
@@ -20,6 +21,18 @@ impl Rng {
     /// Log-uniform between `lo` and `hi`.
     pub fn log_uniform(&mut self, lo: f64, hi: f64) -> f64 {
         lo * (hi / lo).powf(self.next())
+    }
+
+    /// A k the restitution tables answer: log-uniform over their k range once their k cells
+    /// are built ([`RestitutionTables::k_checked`]), else one of their own k.
+    pub fn restitution_k(&mut self) -> f64 {
+        let tables = RestitutionTables::standard();
+        let ks = tables.table_k();
+        if tables.k_checked() {
+            self.log_uniform(ks[0], ks[ks.len() - 1])
+        } else {
+            ks[((self.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+        }
     }
 
     /// A k the tables answer: log-uniform over their k range where the k checks cover every
