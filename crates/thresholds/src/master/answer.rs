@@ -19,7 +19,7 @@
 use super::binary::Table;
 use super::format::F_TOP;
 use super::interp::lagrange_weight;
-use super::table::Curve;
+use super::table::{Curve, RowsAt};
 use super::MasterTables;
 
 /// A table answer is given only where a ratio is clearly on one side of the search limit
@@ -76,14 +76,19 @@ fn side(e: Eval, f_max: f64) -> Side {
 /// A plain pair kept: `((y, x), [g F, g F_on])`.
 type PlainPair = ((f64, f64), Option<[f64; 2]>);
 
-/// The tables that answer at k: one (k is a table's own) or [`K_STENCIL`] around k in ln k, with
-/// the interval of k between two tables (for the k checks) and the Lagrange weights of k. Fixed
-/// arrays: no allocation per answer.
+/// The tables that answer at (k, y): one (k is a table's own) or [`K_STENCIL`] around k in ln k,
+/// with the interval of k between two tables (for the k checks), the Lagrange weights of k and
+/// each table's four rows around y (found once an answer). Fixed arrays: no allocation per
+/// answer.
 struct KStencil<'a> {
     /// The last plain pair asked for: F and F_on are asked at the same point, and one search
     /// along each row serves both.
     plain: std::cell::Cell<Option<PlainPair>>,
     tables: [&'a Table; K_STENCIL],
+    /// Each table's rows around the asked y.
+    at: [RowsAt; K_STENCIL],
+    /// Whether every table's rows around y have increasing ratios ([`Table::monotone`]).
+    monotone: bool,
     /// How many of `tables` (and `weights`) are used: 1, or 4 to [`K_STENCIL`].
     n: usize,
     /// The Lagrange weights of the tables at the asked k (the polynomial in ln k).
@@ -93,15 +98,19 @@ struct KStencil<'a> {
 }
 
 impl KStencil<'_> {
-    fn tables(&self) -> &[&Table] {
-        &self.tables[..self.n]
+    /// The tables with their rows around y.
+    fn tables_at(&self) -> impl Iterator<Item = (&Table, RowsAt)> {
+        self.tables[..self.n]
+            .iter()
+            .zip(&self.at)
+            .map(|(t, &at)| (*t, at))
     }
 
     /// The values of the stencil's tables (`None` if any is missing) combined at the asked k.
-    fn combine(&self, mut g: impl FnMut(&Table) -> Option<f64>) -> Option<f64> {
+    fn combine(&self, mut g: impl FnMut(&Table, RowsAt) -> Option<f64>) -> Option<f64> {
         let mut sum = 0.0;
-        for (t, w) in self.tables().iter().zip(&self.weights) {
-            sum += w * g(t)?;
+        for ((t, at), w) in self.tables_at().zip(&self.weights) {
+            sum += w * g(t, at)?;
         }
         Some(sum)
     }
@@ -114,8 +123,8 @@ impl KStencil<'_> {
             }
         }
         let mut g = Some([0.0; 2]);
-        for (t, w) in self.tables().iter().zip(&self.weights) {
-            match (t.g_plain_both(y, x), g.as_mut()) {
+        for ((t, at), w) in self.tables_at().zip(&self.weights) {
+            match (t.g_plain_both_in(at, y, x), g.as_mut()) {
                 (Some([a, b]), Some(sum)) => {
                     sum[0] += w * a;
                     sum[1] += w * b;
@@ -129,15 +138,20 @@ impl KStencil<'_> {
 }
 
 impl MasterTables {
-    fn k_stencil(&self, k: f64) -> Option<KStencil<'_>> {
+    /// The tables around k with their rows around y; `None` where a table has no four rows
+    /// around y (nothing is vouched for there).
+    fn k_stencil(&self, k: f64, y: f64) -> Option<KStencil<'_>> {
         let ks = self.table_k();
         if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
             let t = self.table(i)?;
+            let at = t.rows_at(y)?;
             let mut weights = [0.0; K_STENCIL];
             weights[0] = 1.0;
             return Some(KStencil {
                 plain: Default::default(),
                 tables: [t; K_STENCIL],
+                at: [at; K_STENCIL],
+                monotone: t.monotone_in(at),
                 n: 1,
                 weights,
                 interval: None,
@@ -153,9 +167,13 @@ impl MasterTables {
         let s = (i + 1).saturating_sub(width / 2).min(n - width);
         let first = self.table(s)?;
         let mut tables = [first; K_STENCIL];
+        let mut at = [first.rows_at(y)?; K_STENCIL];
+        let mut monotone = true;
         let mut ln_k = [0.0; K_STENCIL];
         for q in 0..width {
             tables[q] = self.table(s + q)?;
+            at[q] = tables[q].rows_at(y)?;
+            monotone &= tables[q].monotone_in(at[q]);
             ln_k[q] = ks[s + q].ln();
         }
         let mut weights = [0.0; K_STENCIL];
@@ -165,6 +183,8 @@ impl MasterTables {
         Some(KStencil {
             plain: Default::default(),
             tables,
+            at,
+            monotone,
             n: width,
             weights,
             interval: Some(i),
@@ -183,14 +203,14 @@ impl MasterTables {
             },
             None => None,
         };
-        let monotone = ks.tables().iter().all(|t| t.monotone(y));
+        let monotone = ks.monotone;
         // plain: vouched up to x_hi
         let plain = (curve != Curve::OnsetStrip)
             .then(|| {
                 let v = usize::from(curve != Curve::Stick);
                 let mut hi = check.map_or(f64::INFINITY, |c| c[v]);
-                for t in ks.tables() {
-                    hi = hi.min(t.plain_limit(curve, y)?);
+                for (t, at) in ks.tables_at() {
+                    hi = hi.min(t.plain_limit_in(at, curve)?);
                 }
                 Some(hi)
             })
@@ -214,8 +234,8 @@ impl MasterTables {
             };
             let (mut lo, mut hi) = (check.map_or(f64::NEG_INFINITY, |k| k[c]), f64::INFINITY);
             let mut vouched = true;
-            for t in ks.tables() {
-                match t.vouched(curve, y) {
+            for (t, at) in ks.tables_at() {
+                match t.vouched_in(at, curve) {
                     Some((l, h)) => {
                         lo = lo.max(l);
                         hi = hi.min(h);
@@ -224,7 +244,7 @@ impl MasterTables {
                 }
             }
             if vouched && lo <= hi {
-                let at = |u: f64| ks.combine(|t| t.g_at(curve, y, u));
+                let at = |u: f64| ks.combine(|t, rows| t.g_at_in(rows, curve, y, u));
                 // far from the end the body's ratios have converged (the JKR limit): its first
                 // node answers beyond it; a strip has no such side
                 let u = match curve {
@@ -254,20 +274,20 @@ impl MasterTables {
     /// end) and `k`, from the tables around k where each of them vouches for it, without the
     /// checks between tables (which the build computes with it).
     pub fn g_between_tables(&self, curve: Curve, y: f64, u: f64, k: f64) -> Option<f64> {
-        let ks = self.k_stencil(k)?;
-        ks.combine(|t| {
-            let (lo, hi) = t.vouched(curve, y)?;
+        let ks = self.k_stencil(k, y)?;
+        ks.combine(|t, at| {
+            let (lo, hi) = t.vouched_in(at, curve)?;
             (u >= lo && u <= hi).then_some(())?;
-            t.g_at(curve, y, u)
+            t.g_at_in(at, curve, y, u)
         })
     }
 
     /// [`MasterTables::g_between_tables`] in plain x: every table at the same x, where each
     /// vouches for it.
     pub fn g_plain_between_tables(&self, curve: Curve, y: f64, x: f64, k: f64) -> Option<f64> {
-        let ks = self.k_stencil(k)?;
-        ks.combine(|t| {
-            (x <= t.plain_limit(curve, y)?).then_some(())?;
+        let ks = self.k_stencil(k, y)?;
+        ks.combine(|t, at| {
+            (x <= t.plain_limit_in(at, curve)?).then_some(())?;
             t.g_plain(curve, y, x)
         })
     }
@@ -286,11 +306,11 @@ impl MasterTables {
             return None;
         }
         let ends = self.ends().and_then(|e| e.at(y, k));
-        let ks = self.k_stencil(k)?;
+        let ks = self.k_stencil(k, y)?;
         let beyond = |end: Option<f64>| {
             // past its end a ratio exceeds F_TOP (rows checked for no bouncing beyond)
             match end {
-                Some(end) if x >= end && ks.tables().iter().all(|t| t.monotone(y)) => {
+                Some(end) if x >= end && ks.monotone => {
                     Some(if F_TOP > f_max * (1.0 + V_MAX_MARGIN) {
                         Side::Above
                     } else {

@@ -54,10 +54,20 @@ fn plain_u(row: &binary::Row, x: f64) -> Option<f64> {
     u.is_finite().then_some(u)
 }
 
+/// The four rows around a y and their cell: what every question to a table at that y starts
+/// from, found once an answer ([`Table::rows_at`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) struct RowsAt {
+    /// The first of the four rows.
+    s: usize,
+    /// The cell (between rows `j` and `j + 1`) that holds y.
+    j: usize,
+}
+
 impl Table {
     /// The four rows around `y` (the first index, shifted inward in the two end cells, as the
     /// build checked them), with their cell; `None` outside the rows or with fewer than four.
-    fn stencil(&self, y: f64) -> Option<(usize, usize)> {
+    pub(crate) fn rows_at(&self, y: f64) -> Option<RowsAt> {
         let n = self.rows.len();
         if n < 4 || !(y >= self.ys[0] && y <= self.ys[n - 1]) {
             return None;
@@ -68,13 +78,21 @@ impl Table {
             Some(&j) if self.ys[j as usize] <= y && y <= self.ys[j as usize + 1] => j as usize,
             _ => interval(&self.ys, y),
         };
-        Some((stencil_start(j, n), j))
+        Some(RowsAt {
+            s: stencil_start(j, n),
+            j,
+        })
     }
 
     /// The smallest u at which `curve` is vouched for at `y` (the largest of the rows' and the
     /// cell's limits), and the largest u the rows hold (their first node, far from the end).
     pub fn vouched(&self, curve: Curve, y: f64) -> Option<(f64, f64)> {
-        let (s, j) = self.stencil(y)?;
+        self.vouched_in(self.rows_at(y)?, curve)
+    }
+
+    /// [`Table::vouched`] on the rows found.
+    pub(crate) fn vouched_in(&self, at: RowsAt, curve: Curve) -> Option<(f64, f64)> {
+        let RowsAt { s, j } = at;
         let (v, c) = curve.indices();
         let mut lo = self.cells[j][c];
         let mut hi = f64::INFINITY;
@@ -92,7 +110,12 @@ impl Table {
     /// `g = ln(ratio - 1)` of `curve` at `y` and `u` (the log of the distance to the curve's end),
     /// interpolated without asking whether it is vouched for.
     pub fn g_at(&self, curve: Curve, y: f64, u: f64) -> Option<f64> {
-        let (s, _) = self.stencil(y)?;
+        self.g_at_in(self.rows_at(y)?, curve, y, u)
+    }
+
+    /// [`Table::g_at`] on the rows found.
+    pub(crate) fn g_at_in(&self, at: RowsAt, curve: Curve, y: f64, u: f64) -> Option<f64> {
+        let s = at.s;
         let (v, _) = curve.indices();
         let mut g = [0.0; 4];
         for (q, row) in self.rows[s..s + 4].iter().enumerate() {
@@ -106,7 +129,12 @@ impl Table {
     /// The largest x up to which the body's ratio of `curve` interpolated in plain x at `y` is
     /// vouched for (every row vouched for at that x, and the cell checked up to it).
     pub fn plain_limit(&self, curve: Curve, y: f64) -> Option<f64> {
-        let (s, j) = self.stencil(y)?;
+        self.plain_limit_in(self.rows_at(y)?, curve)
+    }
+
+    /// [`Table::plain_limit`] on the rows found.
+    pub(crate) fn plain_limit_in(&self, at: RowsAt, curve: Curve) -> Option<f64> {
+        let RowsAt { s, j } = at;
         let (v, _) = curve.indices();
         if curve == Curve::OnsetStrip {
             return None;
@@ -125,7 +153,7 @@ impl Table {
     /// the end: beyond the rows' first node, the value there), without asking whether it is
     /// vouched for.
     pub fn g_plain(&self, curve: Curve, y: f64, x: f64) -> Option<f64> {
-        let (s, _) = self.stencil(y)?;
+        let s = self.rows_at(y)?.s;
         let (v, _) = curve.indices();
         let mut g = [0.0; 4];
         for (q, row) in self.rows[s..s + 4].iter().enumerate() {
@@ -138,7 +166,12 @@ impl Table {
 
     /// [`Table::g_plain`] of F and F_on together (one search along each row): `[g F, g F_on]`.
     pub fn g_plain_both(&self, y: f64, x: f64) -> Option<[f64; 2]> {
-        let (s, _) = self.stencil(y)?;
+        self.g_plain_both_in(self.rows_at(y)?, y, x)
+    }
+
+    /// [`Table::g_plain_both`] on the rows found.
+    pub(crate) fn g_plain_both_in(&self, at: RowsAt, y: f64, x: f64) -> Option<[f64; 2]> {
+        let s = at.s;
         let mut g = [[0.0; 4]; 2];
         for (q, row) in self.rows[s..s + 4].iter().enumerate() {
             let (u, p) = (plain_u(row, x)?, &row.body);
@@ -153,7 +186,11 @@ impl Table {
     /// Whether every row of the stencil at `y` has ratios that increase towards the end (and
     /// was found without bouncing beyond it up to [`super::F_TOP`]).
     pub fn monotone(&self, y: f64) -> bool {
-        self.stencil(y)
-            .is_some_and(|(s, _)| self.rows[s..s + 4].iter().all(|r| r.monotone))
+        self.rows_at(y).is_some_and(|at| self.monotone_in(at))
+    }
+
+    /// [`Table::monotone`] on the rows found.
+    pub(crate) fn monotone_in(&self, at: RowsAt) -> bool {
+        self.rows[at.s..at.s + 4].iter().all(|r| r.monotone)
     }
 }
