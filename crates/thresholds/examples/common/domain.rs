@@ -25,6 +25,7 @@ impl Rng {
 
     /// A k the restitution tables answer: log-uniform over their k range once their k cells
     /// are built ([`RestitutionTables::k_checked`]), else one of their own k.
+    #[allow(dead_code)] // the restitution tables' example and test use it, the master tables' not
     pub fn restitution_k(&mut self) -> f64 {
         let tables = RestitutionTables::standard();
         let ks = tables.table_k();
