@@ -76,7 +76,7 @@ pub use table::Curve;
 /// ([`binary::Floats`]) instead of copied on first use (1.2 ms for the end curves and a table,
 /// most of it the kernel's zeroing of fresh pages).
 #[repr(C, align(8))]
-struct Aligned<B: ?Sized>(B);
+pub(crate) struct Aligned<B: ?Sized>(pub(crate) B);
 
 /// The tables' binary form, made by the build script from the committed text files
 /// (`crates/thresholds/data/master_*.csv`), aligned for `f64`.

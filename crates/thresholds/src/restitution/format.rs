@@ -22,6 +22,11 @@
 //! interpolate in them ([`Table`] holds them so).
 
 use crate::bytes::{self, Writer};
+use std::borrow::Cow;
+
+/// An array of numbers: borrowed from the embedded binary form (no copy: a table's first answer
+/// reads only the pages it touches), or owned (made from the text form).
+pub type Floats = Cow<'static, [f64]>;
 
 /// The interpolation coordinate of channel `q`: ln sigma + sigma on the bouncing side (ln sigma
 /// next to V_stick, sigma far above it, where h rises as sigma while e stays near 1 in the JKR
@@ -237,9 +242,9 @@ pub struct Row {
     /// x_s.
     pub x_s: f64,
     /// ln(x_s - x) of the nodes, increasing (the nodes in decreasing x).
-    pub u: Vec<f64>,
+    pub u: Floats,
     /// h of node i at channel c: `h[i * channels + c]`.
-    pub h: Vec<f64>,
+    pub h: Floats,
     /// Cell flags in the same (decreasing x) order of intervals.
     pub cells: Vec<bool>,
     /// k-cell flags likewise (empty: none).
@@ -272,12 +277,18 @@ impl Table {
                 Row {
                     y: r.y,
                     x_s: r.x_s,
-                    u: r.nodes.iter().rev().map(|p| (r.x_s - p.x).ln()).collect(),
+                    u: r.nodes
+                        .iter()
+                        .rev()
+                        .map(|p| (r.x_s - p.x).ln())
+                        .collect::<Vec<_>>()
+                        .into(),
                     h: r.nodes
                         .iter()
                         .rev()
                         .flat_map(|p| p.h.iter().copied())
-                        .collect(),
+                        .collect::<Vec<_>>()
+                        .into(),
                     cells: rev(&r.cells),
                     kcells: rev(&r.kcells),
                 }
@@ -330,12 +341,13 @@ pub fn index(bytes: &[u8]) -> Option<Vec<(f64, usize, usize)>> {
 }
 
 /// Table `i` of the binary form.
-pub fn table_from_bytes(bytes: &[u8], i: usize) -> Option<Table> {
+pub fn table_from_bytes(bytes: &'static [u8], i: usize) -> Option<Table> {
     let mut r = bytes::table(bytes, MAGIC, i)?;
     let (k, sigma, nu) = (r.f()?, r.fs()?, r.fs()?);
     let rows = r.list(|r| {
         let (y, x_s) = (r.f()?, r.f()?);
-        let (u, h, cells, kcells) = (r.fs()?, r.fs()?, r.flags()?, r.flags()?);
+        let (u, h) = (r.fs_borrowed()?, r.fs_borrowed()?);
+        let (cells, kcells) = (r.flags()?, r.flags()?);
         Some(Row {
             y,
             x_s,

@@ -42,15 +42,25 @@
 pub mod build;
 pub mod format;
 
-use crate::master::interp::{interval, lagrange, local_cubic, stencil_start};
+use crate::master::interp::{
+    interval, lagrange, lagrange_weight, local_cubic, stencil_start, weights4,
+};
 use crate::master::{MasterTables, F_TOP};
 use contact::Contact;
 use dynamics::Outcome;
 use format::Table;
 use std::sync::OnceLock;
 
-/// The tables' binary form, made by the build script from `data/restitution_k*.csv`.
-static BYTES: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/restitution.bin"));
+/// The tables' binary form, made by the build script from `data/restitution_k*.csv`, aligned for
+/// `f64` so that each table's arrays are borrowed in place on first use (a table is 5.9 MB:
+/// copied, its first answer cost 5-7 ms).
+static ALIGNED: &crate::master::Aligned<[u8]> = &crate::master::Aligned(*include_bytes!(concat!(
+    env!("OUT_DIR"),
+    "/restitution.bin"
+)));
+
+/// [`ALIGNED`]'s bytes.
+static BYTES: &[u8] = &ALIGNED.0;
 
 /// Within this relative distance of V_double_onset (where the outcome jumps from sticking to a
 /// double collision) the ODE decides.
@@ -286,25 +296,56 @@ impl RestitutionTables {
     }
 }
 
-/// h of node `node` of `row` at the channel coordinate (ln sigma or logit nu; local cubic along
-/// the channels).
-fn node_h(t: &Table, row: &format::Row, node: usize, side: Side, coord: f64) -> Option<f64> {
-    let channels = t.sigma.len() + t.nu.len();
-    let (grid, offset) = match side {
-        Side::Bouncing => (&t.sigma, 0),
-        Side::Double => (&t.nu, t.sigma.len()),
-    };
-    if !(coord >= grid[0] && coord <= grid[grid.len() - 1]) {
-        return None;
+/// Where an answer lies along a table's channels: the (at most) four channels around its
+/// coordinate, as an offset into a node's h values, and their Lagrange weights. The same for
+/// every node of the table, so found once an answer instead of once a node (sixteen nodes a
+/// table: a fifth of an answer).
+struct Channels {
+    /// The first channel's index among a node's values (bouncing channels first).
+    first: usize,
+    /// How many channels (four, fewer only on a grid of fewer).
+    len: usize,
+    /// Their weights at the coordinate ([`lagrange`]'s).
+    weights: [f64; 4],
+}
+
+impl Channels {
+    /// The channels of `t` around `coord` (ln sigma + sigma or logit nu) on `side`; `None`
+    /// outside the channels.
+    fn around(t: &Table, side: Side, coord: f64) -> Option<Channels> {
+        let (grid, offset) = match side {
+            Side::Bouncing => (&t.sigma, 0),
+            Side::Double => (&t.nu, t.sigma.len()),
+        };
+        if !(coord >= grid[0] && coord <= grid[grid.len() - 1]) {
+            return None;
+        }
+        let s = stencil_start(interval(grid, coord), grid.len());
+        let e = (s + 4).min(grid.len());
+        let mut weights = [0.0; 4];
+        if e - s == 4 {
+            weights = weights4(&grid[s..e], coord);
+        } else {
+            for (j, w) in weights.iter_mut().enumerate().take(e - s) {
+                *w = lagrange_weight(&grid[s..e], j, coord);
+            }
+        }
+        Some(Channels {
+            first: offset + s,
+            len: e - s,
+            weights,
+        })
     }
-    let values = &row.h[node * channels + offset..node * channels + offset + grid.len()];
-    let s = stencil_start(interval(grid, coord), grid.len());
-    let e = (s + 4).min(grid.len());
-    let v = &values[s..e];
-    if v.iter().any(|h| !h.is_finite()) {
-        return None;
+
+    /// h of node `node` of `row` of `t` at the coordinate (the local cubic along the channels).
+    fn h(&self, t: &Table, row: &format::Row, node: usize) -> Option<f64> {
+        let at = node * (t.sigma.len() + t.nu.len()) + self.first;
+        let v = row.h.get(at..at + self.len)?;
+        if v.iter().any(|h| !h.is_finite()) {
+            return None;
+        }
+        Some(v.iter().zip(&self.weights).map(|(h, w)| w * h).sum())
     }
-    Some(lagrange(&grid[s..e], v, coord))
 }
 
 /// h of one table at `(x, y)`: four nodes around x on each of the four rows around y.
@@ -339,6 +380,7 @@ fn table_h(
             return None;
         }
     }
+    let channels = Channels::around(t, side, coord)?;
     let s = stencil_start(j, n);
     let mut across = [0.0; 4];
     for (q, r) in t.rows[s..s + 4].iter().enumerate() {
@@ -349,7 +391,7 @@ fn table_h(
         let a = stencil_start(interval(&r.u, u), r.u.len());
         let mut along = [0.0; 4];
         for (p, node) in (a..a + 4).enumerate() {
-            along[p] = node_h(t, r, node, side, coord)?;
+            along[p] = channels.h(t, r, node)?;
         }
         across[q] = local_cubic(&r.u[a..a + 4], &along, u);
     }
