@@ -94,7 +94,21 @@ fn write_k_cells(
     cfg: &BuildConfig,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<(), Error> {
+    if MasterTables::standard().table_k().is_empty() {
+        return Err(
+            "the master tables are not embedded: build them first (cargo xtask master-table)"
+                .into(),
+        );
+    }
     let mut tables = committed(root)?;
+    // the cubic in ln k through four tables: fewer give no k cells to check
+    if tables.len() < 4 {
+        return Err(format!(
+            "the k cells need at least four committed restitution tables, found {}: build them first (cargo xtask restitution-table --only I)",
+            tables.len()
+        )
+        .into());
+    }
     k_cells(cfg, &mut tables, MasterTables::standard(), progress)?;
     for t in &tables {
         std::fs::write(table_path(root, t.k), to_text(t))?;

@@ -48,8 +48,9 @@ where
         let mut done = Vec::new();
         while done.len() < n {
             let elapsed = began.elapsed();
-            if elapsed >= SEQUENTIAL_PROBE {
-                let per_element = elapsed.as_secs_f64() / done.len().max(1) as f64;
+            // at least one element measured: the chunks' size comes from its rate
+            if elapsed >= SEQUENTIAL_PROBE && !done.is_empty() {
+                let per_element = elapsed.as_secs_f64() / done.len() as f64;
                 if per_element * (n - done.len()) as f64 >= SEQUENTIAL_REST.as_secs_f64() {
                     break;
                 }

@@ -232,6 +232,12 @@ def test_the_stuck_probability_is_the_weight_of_the_faster_thresholds(rows, radi
     w /= w.sum()
     brute = (w[None, :, None] * (v[None, None, :] < vs[:, :, None])).sum(axis=1)
     np.testing.assert_allclose(stuck_probability(vs, w, v), np.minimum(brute, 1.0), atol=1e-15)
+    # certain outcomes are certain: all radii stick below the slowest V_stick, none above the
+    # fastest, with weights whose sum rounds below 1 (3 x 0.1 + 0.7 = 0.9999999999999999)
+    w = np.array([0.1, 0.1, 0.1, 0.7])
+    vs = 10 ** rng.uniform(-2, -1, (rows, 4))
+    p = stuck_probability(vs, w, np.array([1e-3, 1.0]))
+    assert np.all(p[:, 0] == 1.0) and np.all(p[:, 1] == 0.0)
 
 
 def test_the_same_seed_gives_the_same_chain():
@@ -346,6 +352,7 @@ def test_the_autocorrelation_time_of_an_ar1_chain(phi):
     np.testing.assert_allclose(tau, emcee.autocorr.integrated_time(x, tol=0), rtol=1e-12)
     # a chain that never moved is perfectly correlated, not a division by zero
     assert np.all(np.isinf(integrated_time(np.ones((100, 8, 2)))))
+    assert np.all(np.isinf(integrated_time(np.full((1500, 8, 2), -9.3))))  # mean not exact
 
 
 def _data(kinds):

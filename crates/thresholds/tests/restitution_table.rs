@@ -78,3 +78,17 @@ fn random_collisions_agree_with_the_ode() {
         "the tables answered {answered} of {tried}"
     );
 }
+
+/// The embedded arrays are read in place, borrowed from the binary form (aligned for `f64`),
+/// not copied: a table is 5.9 MB, and copied its first answer cost 5-7 ms
+/// (`docs/performance.md`, "Restitution tables").
+#[test]
+#[cfg(target_endian = "little")]
+fn the_embedded_arrays_are_borrowed_in_place() {
+    use std::borrow::Cow;
+    let row = &RestitutionTables::standard()
+        .table(0)
+        .expect("the embedded restitution tables")
+        .rows[0];
+    assert!(matches!(row.u, Cow::Borrowed(_)) && matches!(row.h, Cow::Borrowed(_)));
+}

@@ -285,8 +285,10 @@ def stuck_probability(v_stick: np.ndarray, weights: np.ndarray, v: np.ndarray) -
     at = np.bincount((np.arange(rows)[:, None] * (v.size + 1) + below).ravel(),
                      weights=np.broadcast_to(weights, (rows, radii)).ravel(),
                      minlength=rows * (v.size + 1)).reshape(rows, v.size + 1)
-    p_sorted = np.cumsum(at[:, :0:-1], axis=1)[:, ::-1]
+    # summed from the top, each over the sum of all weights: where every radius sticks that is
+    # the same sum in the same order, so P = 1 exactly and log1p(-P) = -inf (as P = 0 exactly
+    # where none does), whatever the weights' sum rounds to
+    above = np.cumsum(at[:, ::-1], axis=1)[:, ::-1]
     p = np.empty((rows, v.size))
-    p[:, order] = p_sorted
-    # a sum of weights may pass 1 by a rounding: log1p(-p) must stay -inf, not NaN
+    p[:, order] = above[:, 1:] / above[:, :1]
     return np.minimum(p, 1.0)

@@ -2,9 +2,10 @@
 and its snooker update (ter Braak & Vrugt 2008, Statistics and Computing 18, 435), each for a
 whole sub-ensemble of walkers in one numpy expression.
 
-- :func:`de_proposal` is emcee's ``DEMove`` (ter Braak 2006, Section 2): x' = x + gamma0
-  (z1 - z2) + e, z1 != z2 drawn from the other walkers, gamma0 = 2.38 / sqrt(2 d), e a normal
-  of width :data:`DE_SIGMA` added to every coordinate; symmetric, so no acceptance factor.
+- :func:`de_proposal` is emcee's ``DEMove`` (ter Braak 2006; Nelson et al. 2013): x' = x +
+  gamma (z1 - z2), z1 != z2 drawn from the other walkers, gamma = gamma0 (1 + s e) with gamma0 =
+  2.38 / sqrt(2 d), e a standard normal and s = :data:`DE_SIGMA`; symmetric, so no acceptance
+  factor.
 - :func:`snooker_proposal` is the snooker update (Section 3): anchor z, unit vector
   u = (x - z) / |x - z|, proposal x' = x + gamma u (u . (z1 - z2)), acceptance factor
   (|x' - z| / |x - z|)^(d - 1). emcee 3.1.6 (the newest release) scales its ``DESnookerMove``
@@ -24,8 +25,9 @@ from typing import Any, List, Tuple
 
 import numpy as np
 
-#: emcee's ``DEMove`` default: the width of the small normal jitter added to every differential
-#: evolution step (ter Braak 2006: "b small compared to the width of the target").
+#: emcee's ``DEMove`` default: the relative width of the normal jitter of each differential
+#: evolution step's length (ter Braak 2006: a jitter small against the target's width keeps
+#: the chain from being confined to the walkers' differences).
 DE_SIGMA = 1e-5
 
 #: The snooker's step factor gamma: ter Braak & Vrugt (2008) draw it from U(1.2, 2.2); 1.7, its
@@ -54,9 +56,8 @@ def de_proposal(
     i = (u[0] * m).astype(np.intp)
     j = (u[1] * (m - 1)).astype(np.intp)
     j += j >= i
-    gamma0 = 2.38 / math.sqrt(2.0 * ndim)
-    jitter = DE_SIGMA * random.standard_normal(n)
-    q = s + gamma0 * (others[i] - others[j]) + jitter[:, None]
+    gamma = 2.38 / math.sqrt(2.0 * ndim) * (1.0 + DE_SIGMA * random.standard_normal((n, 1)))
+    q = s + gamma * (others[i] - others[j])
     return q, np.zeros(n)
 
 

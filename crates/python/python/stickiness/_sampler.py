@@ -119,14 +119,17 @@ def integrated_time(chain: np.ndarray) -> np.ndarray:
     sum_{t=1}^{M} rho(t) up to Sokal's window (the smallest M >= :data:`AUTOCORR_WINDOW`
     tau(M)); emcee's ``autocorr.integrated_time`` (Foreman-Mackey et al. 2013, Section 3 of
     its documentation's "Autocorrelation analysis"), with a walker that never moved counted
-    as perfectly correlated (``inf``) instead of dividing by zero."""
+    as perfectly correlated (``inf``) instead of dividing by zero. Where no window is reached
+    within the chain (tau(M) > M / 5 at every lag) the whole chain's sum is returned, a lower
+    bound, where emcee returns tau(0) = 1."""
     steps = chain.shape[0]
     n = 1 << max(steps - 1, 1).bit_length()
     x = chain - chain.mean(axis=0)
     f = np.fft.rfft(x, n=2 * n, axis=0)
     acf = np.fft.irfft(f * np.conjugate(f), axis=0)[:steps]
     var = acf[0]
-    frozen = var <= 0.0
+    # a walker that never moved (its mean need not be exact, its spread is)
+    frozen = np.ptp(chain, axis=0) == 0.0
     with np.errstate(invalid="ignore", divide="ignore"):
         rho = np.where(frozen, 1.0, acf / np.where(frozen, 1.0, var))
     # averaged over the walkers: steps x parameters
