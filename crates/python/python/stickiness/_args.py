@@ -200,6 +200,10 @@ def t_vis(value: Any, law: Optional[str], radius: Any, default: Optional[float])
     return value
 
 
+#: The names of result codes as numpy arrays, made once ("search"/"table", "ode"/"table"):
+#: an array of strings made at every call cost as much as the rest of a 64-element result.
+_NAME_ARRAYS: Dict[Tuple[str, ...], np.ndarray] = {}
+
 #: The number arguments that may be None (absent) in a broadcast.
 OPTIONAL = ("radius2",)
 
@@ -271,7 +275,10 @@ class Broadcast:
         """Codes (indices into ``names``) as a string, or an array of them."""
         if self.scalar:
             return names[codes if type(codes) is int else int(codes[0])]
-        return np.array(names)[np.asarray(codes, dtype=np.intp)].reshape(self.shape)
+        table = _NAME_ARRAYS.get(tuple(names))
+        if table is None:
+            table = _NAME_ARRAYS.setdefault(tuple(names), np.array(names))
+        return table.take(codes).reshape(self.shape)
 
     def name_at(self, field: str, flat: int) -> str:
         """``field`` with the index, in its own shape, of element ``flat`` of the broadcast."""
