@@ -27,6 +27,14 @@ const SEQUENTIAL_PROBE: Duration = Duration::from_micros(50);
 /// slow element (a search: milliseconds) ends the start.
 const SEQUENTIAL_REST: Duration = Duration::from_micros(250);
 
+/// During the sequential start the clock is read after each of the first this-many elements,
+/// then after every this-many-th: a table answer takes about a microsecond, a read of the
+/// clock a tenth of that.
+const CLOCK_EVERY: usize = 4;
+
+/// Room made for the sequential start's results at once (they rarely pass a few hundred).
+const PROBE_CAPACITY: usize = 1024;
+
 /// After the start, a chunk holds about this much work on every core (from the rate measured
 /// so far), so that Ctrl-C is checked every few tens of milliseconds whatever an element costs.
 const CHUNK_TIME: Duration = Duration::from_millis(20);
@@ -45,13 +53,17 @@ where
     let mut out = Vec::with_capacity(n);
     let began = Instant::now();
     let first: Vec<Result<T, Error>> = py.detach(|| {
-        let mut done = Vec::new();
+        let mut done = Vec::with_capacity(n.min(PROBE_CAPACITY));
         while done.len() < n {
-            let elapsed = began.elapsed();
-            // at least one element measured: the chunks' size comes from its rate
-            if elapsed >= SEQUENTIAL_PROBE && !done.is_empty() {
+            // at least one element measured (the chunks' size comes from its rate); the clock
+            // read after each of the first few, then every CLOCK_EVERY-th (a read costs a
+            // tenth of a table answer)
+            if !done.is_empty() && (done.len() < CLOCK_EVERY || done.len() % CLOCK_EVERY == 0) {
+                let elapsed = began.elapsed();
                 let per_element = elapsed.as_secs_f64() / done.len() as f64;
-                if per_element * (n - done.len()) as f64 >= SEQUENTIAL_REST.as_secs_f64() {
+                if elapsed >= SEQUENTIAL_PROBE
+                    && per_element * (n - done.len()) as f64 >= SEQUENTIAL_REST.as_secs_f64()
+                {
                     break;
                 }
             }

@@ -221,6 +221,8 @@ class Broadcast:
             self.flat: Dict[str, Any] = {k: v for k, v in args.items() if v is not None}
             self.scalar = True
             return
+        if self._one_vector(args):
+            return
         arrays: Dict[str, np.ndarray] = {}
         for k, v in args.items():
             if v is None:
@@ -256,6 +258,39 @@ class Broadcast:
             self.flat = {k: np.ascontiguousarray(a) for k, a in self.flat.items()}
         self.scalar = not self.shape and all(not s for s in self.shapes.values())
 
+    def _one_vector(self, args: Dict[str, Any]) -> bool:
+        """The common array call: floats and flat contiguous float64 arrays of one length (a
+        sweep over T_vis at one radius, a sampler's walkers): taken as they are, the floats
+        filled to that length; ``False`` (nothing set) for anything else."""
+        shape = None
+        for k, v in args.items():
+            kind = type(v)
+            if kind is np.ndarray:
+                # flat, float64 and contiguous: one stride of 8 bytes (no flags object)
+                if v.dtype != np.float64 or v.strides != (8,) or (
+                        shape is not None and v.shape != shape):
+                    return False
+                shape = v.shape
+            elif not (kind is float or (v is None and k in OPTIONAL)):
+                return False
+        if shape is None:
+            return False
+        self.shapes = {}
+        self.flat = {}
+        for k, v in args.items():
+            if type(v) is np.ndarray:
+                self.shapes[k] = shape
+                self.flat[k] = v
+            elif v is not None:
+                self.shapes[k] = ()
+                # empty + fill: a third less than np.full
+                filled = np.empty(shape)
+                filled.fill(v)
+                self.flat[k] = filled
+        self.shape = shape
+        self.scalar = False
+        return True
+
     @property
     def size(self) -> int:
         return math.prod(self.shape)
@@ -265,6 +300,8 @@ class Broadcast:
         if self.scalar:
             kind = type(flat)
             return flat if kind is float else flat.item(0) if kind is np.ndarray else flat[0]
+        if type(flat) is np.ndarray and flat.shape == self.shape:
+            return flat
         return np.asarray(flat).reshape(self.shape)
 
     def methods(self, codes: Any) -> Any:
