@@ -102,32 +102,25 @@ fn main() -> ExitCode {
         Command::Wheel { profile } => xtask::wheel::build(&workspace_root(), &profile).map(|w| {
             println!("{}", w.display());
         }),
-        Command::RestitutionTable {
-            check,
-            only,
-            k_cells,
-        } => {
-            if check {
-                xtask::restitution_table::run_check(&workspace_root())
-            } else if k_cells {
-                xtask::restitution_table::run_k_cells(&workspace_root())
-            } else {
-                xtask::restitution_table::run_build(&workspace_root(), &only)
-            }
+        Command::RestitutionTable { check: true, .. } => {
+            xtask::restitution_table::run_check(&workspace_root())
+        }
+        Command::RestitutionTable { k_cells: true, .. } => {
+            xtask::restitution_table::run_k_cells(&workspace_root())
+        }
+        Command::RestitutionTable { only, .. } => {
+            xtask::restitution_table::run_build(&workspace_root(), &only)
+        }
+        Command::MasterTable { check: true, .. } => {
+            xtask::master_table::run_check(&workspace_root())
         }
         Command::MasterTable {
-            check,
             part,
             only,
             y_min,
             extend,
-        } => {
-            if check {
-                xtask::master_table::run_check(&workspace_root())
-            } else {
-                xtask::master_table::run_build(&workspace_root(), part, &only, y_min, extend)
-            }
-        }
+            ..
+        } => xtask::master_table::run_build(&workspace_root(), part, &only, y_min, extend),
         Command::Docs => {
             xtask::docs::build(&workspace_root(), xtask::docs::Package::Install, None).map(|_| ())
         }

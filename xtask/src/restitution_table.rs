@@ -1,5 +1,5 @@
-//! `cargo xtask restitution-table [--check | --only I,.. | --k-cells]`: build the restitution tables (V_out and e of
-//! single collisions over the dimensionless numbers, k and the impact speed) from the ODE and
+//! `cargo xtask restitution-table [--check | --only I,.. | --k-cells]`: build the restitution
+//! tables (V_out and e of single collisions over the dimensionless numbers, k and the impact speed) from the ODE and
 //! write them to `crates/thresholds/data/restitution_k<k>.csv`, or recompute a sample of their
 //! values and fail if the model no longer gives them. They stand on the committed master
 //! tables (V_stick and V_double_onset at every node), so build those first.
@@ -52,12 +52,7 @@ pub fn run_build(root: &Path, only: &[usize]) -> Result<(), Error> {
     let ends = committed_ends(root)?;
     let masters = MasterTables::standard();
     let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
-    if masters.table_k().is_empty() {
-        return Err(
-            "the master tables are not embedded: build them first (cargo xtask master-table)"
-                .into(),
-        );
-    }
+    require_masters(masters)?;
     // the indices of the standard k grid (k = 0.005 2^(i/3)) that have a master table
     let has_master = |i: usize| {
         let k = grid_k(ends.k0, 3, i);
@@ -88,18 +83,24 @@ pub fn run_k_cells(root: &Path) -> Result<(), Error> {
     write_k_cells(root, &BuildConfig::standard(), &progress)
 }
 
+/// The restitution tables stand on the master tables (V_stick and the onset at every node).
+fn require_masters(masters: &MasterTables) -> Result<(), Error> {
+    if masters.table_k().is_empty() {
+        return Err(
+            "the master tables are not embedded: build them first (cargo xtask master-table)"
+                .into(),
+        );
+    }
+    Ok(())
+}
+
 /// The k cells of the committed tables, computed and written.
 fn write_k_cells(
     root: &Path,
     cfg: &BuildConfig,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<(), Error> {
-    if MasterTables::standard().table_k().is_empty() {
-        return Err(
-            "the master tables are not embedded: build them first (cargo xtask master-table)"
-                .into(),
-        );
-    }
+    require_masters(MasterTables::standard())?;
     let mut tables = committed(root)?;
     // the cubic in ln k through four tables: fewer give no k cells to check
     if tables.len() < 4 {

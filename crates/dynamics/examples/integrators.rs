@@ -26,10 +26,7 @@ fn main() -> Result<(), DynamicsError> {
         ("CO2 60 um, T_vis = 1e-14 s", co2, 1e-14, 0.0165975),
     ];
     let run = |contact: Contact, t_vis: f64, method: Method, rtol: f64, v: f64| {
-        let opts = SolverOptions {
-            method,
-            ..SolverOptions::at_rtol(rtol)
-        };
+        let opts = SolverOptions::at_rtol(rtol).with_method(method);
         Collider::new(contact, &law, t_vis)?
             .with_options(opts)?
             .collide(v)

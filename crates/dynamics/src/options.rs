@@ -120,6 +120,18 @@ impl SolverOptions {
         o
     }
 
+    /// These settings with the integrator `method`.
+    ///
+    /// ```
+    /// use dynamics::{Method, SolverOptions};
+    /// let o = SolverOptions::at_rtol(1e-8).with_method(Method::Bdf);
+    /// assert_eq!((o.method, o.rtol), (Method::Bdf, 1e-8));
+    /// ```
+    pub const fn with_method(mut self, method: Method) -> Self {
+        self.method = method;
+        self
+    }
+
     /// Checks every field: `0 < rtol < 1`, `atol > 0`, `decide_after >= 0` (all finite) and
     /// `max_oscillations >= 1`.
     pub fn validate(&self) -> Result<(), OutOfRange> {

@@ -173,10 +173,7 @@ fn solvers_agree_and_converge() {
     for t_vis in [1e-9, 1e-13] {
         for v_in in [0.045, 0.2] {
             let e = |method: Method, rtol: f64| {
-                let opts = SolverOptions {
-                    method,
-                    ..SolverOptions::at_rtol(rtol)
-                };
+                let opts = SolverOptions::at_rtol(rtol).with_method(method);
                 co2_collider(&law, t_vis, opts).collide(v_in).unwrap().e
             };
             let base = e(Method::Bdf, 1e-9);

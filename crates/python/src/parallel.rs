@@ -43,8 +43,10 @@ const CHUNK_TIME: Duration = Duration::from_millis(20);
 const MAX_CHUNK: usize = 1 << 20;
 
 /// `f(0), ..., f(n - 1)` with the GIL released: first one after the other for
-/// [`SEQUENTIAL_PROBE`] (and on to the end if the rest is shorter than [`SEQUENTIAL_REST`]), then the rest on all cores in chunks with a check for signals (Ctrl-C
-/// raises `KeyboardInterrupt`) after each; the first error in index order is returned.
+/// [`SEQUENTIAL_PROBE`] (and on to the end if the rest is shorter than
+/// [`SEQUENTIAL_REST`]), then the rest on all cores in chunks with a check for signals
+/// (Ctrl-C raises `KeyboardInterrupt`) after each; the first error in index order is
+/// returned.
 pub fn map<T, F>(py: Python<'_>, n: usize, f: F) -> PyResult<Vec<T>>
 where
     T: Send,

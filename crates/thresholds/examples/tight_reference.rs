@@ -21,15 +21,7 @@ fn main() {
     println!(
         "case | V_stick - ref | V_double_onset - ref | collisions | without restarts: V_stick - ref | V_double_onset - ref"
     );
-    for (name, contact, t_vis) in common::cases(&[
-        ("co2", 1e-9),
-        ("co2", 1e-14),
-        ("h2o", 1e-9),
-        ("co2", 1e-12),
-        ("co2", 1e-11),
-        ("co2", 1e-10),
-        ("co2", 1e-8),
-    ]) {
+    for (name, contact, t_vis) in common::cases(common::REFERENCE) {
         let r = sticking_thresholds(&contact, &law, t_vis, &reference).unwrap();
         let d = sticking_thresholds(&contact, &law, t_vis, &SearchOptions::exact()).unwrap();
         let no_restarts = SearchOptions {

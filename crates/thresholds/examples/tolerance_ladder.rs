@@ -19,25 +19,13 @@ use thresholds::{sticking_thresholds, Contact, CrackLaw, SearchOptions, SolverOp
 
 fn main() {
     let law = CrackLaw::new(0.01).unwrap();
-    let cases = common::cases(&[
-        ("co2", 1e-14),
-        ("co2", 1e-12),
-        ("co2", 1e-11),
-        ("co2", 1e-10),
-        ("co2", 1e-9),
-        ("co2", 1e-8),
-        ("h2o", 1e-11),
-        ("h2o", 1e-9),
-    ]);
+    let cases = common::cases(common::REFERENCE);
     let rtols = [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9];
     let methods = [Method::Bdf, Method::Auto];
     let search = |contact: &Contact, t_vis: f64, method: Method, rtol: f64| {
         let opts = SearchOptions {
             rel_tol: 1e-9,
-            solver: SolverOptions {
-                method,
-                ..SolverOptions::at_rtol(rtol)
-            },
+            solver: SolverOptions::at_rtol(rtol).with_method(method),
             ..SearchOptions::exact()
         };
         let th = sticking_thresholds(contact, &law, t_vis, &opts).unwrap();

@@ -192,10 +192,7 @@ fn v_stick_converges_and_solvers_agree() {
     let run = |method: Method, rtol: f64| {
         let opts = SearchOptions {
             rel_tol: 1e-10,
-            solver: SolverOptions {
-                method,
-                ..SolverOptions::at_rtol(rtol)
-            },
+            solver: SolverOptions::at_rtol(rtol).with_method(method),
             ..Default::default()
         };
         sticking_thresholds(&c, &law(), 1e-9, &opts)

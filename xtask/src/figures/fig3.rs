@@ -2,7 +2,7 @@
 //! and double collisions) and computed, for CO2 grains of 60 um at T_vis = 1e-9 s (Section 4.4).
 
 use super::chart::*;
-use super::{co2_contact, linspace, material_line, par_map, FIG2_T_VIS, K};
+use super::{co2_contact, figure_table, linspace, par_map, FIG2_T_VIS, K};
 use super::{Error, Progress, Resolution};
 use crate::table::Table;
 use contact::Material;
@@ -84,17 +84,13 @@ impl Figure3 {
     /// `fig3.csv`.
     pub fn to_tables(&self) -> Vec<Table> {
         let (vd, vs) = self.transitions();
-        let mut t = Table::new(
+        let (r, t_vis, k) = (number(MUSIOLIK_2016A.radius), number(FIG2_T_VIS), number(K));
+        let mut t = figure_table(
             "fig3.csv",
-            vec![
-                "Figure 3: coefficient of restitution e against the impact speed V_in (Section 4.4)".into(),
-                material_line("co2", &Material::co2()),
-                format!(
-                    "radius = {} m, t_vis = {} s, k = {}",
-                    number(MUSIOLIK_2016A.radius),
-                    number(FIG2_T_VIS),
-                    number(K)
-                ),
+            "Figure 3: coefficient of restitution e against the impact speed V_in (Section 4.4)",
+            ("co2", &Material::co2()),
+            &[
+                format!("radius = {r} m, t_vis = {t_vis} s, k = {k}"),
                 format!("v_double_onset = {} m/s, v_stick = {} m/s", number(vd), number(vs)),
                 "e: observed value (0 for sticking and double collisions); e_computed: -V_out/V_in of the first contact".into(),
                 "units: v_in [m/s], e and e_computed dimensionless".into(),

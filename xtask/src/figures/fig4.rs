@@ -2,7 +2,7 @@
 //! Musiolik et al. (2016a) (Section 5.1).
 
 use super::curves::{v_stick_chart, ThresholdCurve};
-use super::{co2_contact, geomspace, material_line, par_map, Error, Progress, Resolution, KS};
+use super::{co2_contact, figure_table, geomspace, par_map, Error, Progress, Resolution, KS};
 use crate::table::Table;
 use contact::Material;
 use greenwood::CrackLaw;
@@ -37,17 +37,13 @@ impl Figure4 {
     /// `fig4.csv`.
     pub fn to_tables(&self) -> Vec<Table> {
         let e = MUSIOLIK_2016A;
-        let mut t = Table::new(
+        let (r, v, dv) = (number(e.radius), number(e.v_stick), number(e.v_stick_err));
+        let mut t = figure_table(
             "fig4.csv",
-            vec![
-                "Figure 4: threshold velocity for sticking V_stick against T_vis for several k (Section 5.1)".into(),
-                material_line("co2", &Material::co2()),
-                format!(
-                    "radius = {} m; experiment (Musiolik et al. 2016a): V_stick = {} +- {} m/s",
-                    number(e.radius),
-                    number(e.v_stick),
-                    number(e.v_stick_err)
-                ),
+            "Figure 4: threshold velocity for sticking V_stick against T_vis for several k (Section 5.1)",
+            ("co2", &Material::co2()),
+            &[
+                format!("radius = {r} m; experiment (Musiolik et al. 2016a): V_stick = {v} +- {dv} m/s"),
                 "units: k dimensionless, t_vis [s], v_stick, v_double_onset, v_stick_jkr [m/s]".into(),
             ],
             &["k", "t_vis", "v_stick", "v_double_onset", "v_stick_jkr"],

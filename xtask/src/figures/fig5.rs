@@ -3,7 +3,7 @@
 
 use super::curves::{v_stick_chart, ThresholdCurve};
 use super::{
-    geomspace, h2o_with, material_line, par_map, Error, Progress, Resolution, GAMMAS_H2O, K,
+    figure_table, geomspace, h2o_with, par_map, Error, Progress, Resolution, GAMMAS_H2O, K,
 };
 use crate::table::Table;
 use contact::{Contact, Geometry, Material};
@@ -39,17 +39,14 @@ impl Figure5 {
 
     /// `fig5.csv`.
     pub fn to_tables(&self) -> Vec<Table> {
-        let mut t = Table::new(
+        let e = MUSIOLIK_2016B;
+        let (r, k, v) = (number(e.radius), number(K), number(e.v_stick));
+        let mut t = figure_table(
             "fig5.csv",
-            vec![
-                "Figure 5: V_stick against T_vis for H2O grains and several gamma_sv (Section 5.2)".into(),
-                material_line("h2o (gamma_sv varied)", &Material::h2o()),
-                format!(
-                    "radius = {} m, k = {}; experiment (Musiolik et al. 2016b): V_stick ~ {} m/s",
-                    number(MUSIOLIK_2016B.radius),
-                    number(K),
-                    number(MUSIOLIK_2016B.v_stick)
-                ),
+            "Figure 5: V_stick against T_vis for H2O grains and several gamma_sv (Section 5.2)",
+            ("h2o (gamma_sv varied)", &Material::h2o()),
+            &[
+                format!("radius = {r} m, k = {k}; experiment (Musiolik et al. 2016b): V_stick ~ {v} m/s"),
                 "v_stick is empty where no collision bounces up to no_bouncing_below (the curve ends)".into(),
                 "units: gamma_sv [J/m^2], t_vis [s], v_stick, v_double_onset, v_stick_jkr, no_bouncing_below [m/s]".into(),
             ],

@@ -2,7 +2,7 @@
 //! monomer radius, for both size laws and JKR (Sections 5.4, 6).
 
 use super::chart::*;
-use super::{geomspace, material_line, par_map, K};
+use super::{figure_table, geomspace, par_map, K};
 use super::{Error, Progress, Resolution};
 use crate::table::Table;
 use contact::{Contact, Geometry, Material};
@@ -70,17 +70,14 @@ impl Figure7 {
 
     /// `fig7.csv`.
     pub fn to_tables(&self) -> Vec<Table> {
-        let mut t = Table::new(
+        let (v_lo, v_hi) = (number(V_COL_MAX.0), number(V_COL_MAX.1));
+        let mut t = figure_table(
             "fig7.csv",
-            vec![
-                "Figure 7: V_stick of monomers and V_frag = 10 V_stick of aggregates against the monomer radius (Sections 5.4, 6)".into(),
-                material_line("co2 (Section 5.4 density)", &self.material),
+            "Figure 7: V_stick of monomers and V_frag = 10 V_stick of aggregates against the monomer radius (Sections 5.4, 6)",
+            ("co2 (Section 5.4 density)", &self.material),
+            &[
                 format!("k = {}; t_vis_co2 = 1e-11 s (R1/1 um)^1.11, t_vis_h2o = 1e-10 s (R1/1.5 um)^1.11", number(K)),
-                format!(
-                    "maximum collision velocities in weakly turbulent disks: {} - {} m/s",
-                    number(V_COL_MAX.0),
-                    number(V_COL_MAX.1)
-                ),
+                format!("maximum collision velocities in weakly turbulent disks: {v_lo} - {v_hi} m/s"),
                 "units: r1 [m], t_vis_* [s], v_* [m/s]".into(),
             ],
             &[

@@ -109,6 +109,19 @@ pub(crate) fn material_line(name: &str, m: &Material) -> String {
     )
 }
 
+/// A figure's table: the comment lines `title`, the material's line and `notes`, then `columns`.
+pub(crate) fn figure_table(
+    file: &str,
+    title: &str,
+    (name, material): (&str, &Material),
+    notes: &[String],
+    columns: &[&str],
+) -> Table {
+    let mut comments = vec![title.to_string(), material_line(name, material)];
+    comments.extend_from_slice(notes);
+    Table::new(file, comments, columns)
+}
+
 /// Two identical CO2 spheres of radius `r1` (m).
 pub(crate) fn co2_contact(r1: f64) -> Result<Contact, Error> {
     Ok(Contact::new(Material::co2(), Geometry::identical(r1))?)

@@ -3,6 +3,19 @@
 
 use thresholds::{Contact, Geometry, Material};
 
+/// The cases of `tight_reference` and `tolerance_ladder`: CO2 from the JKR end (1e-14 s) to the
+/// paper's fit (1e-9 s) and beyond, H2O at two T_vis.
+pub const REFERENCE: &[(&str, f64)] = &[
+    ("co2", 1e-14),
+    ("co2", 1e-12),
+    ("co2", 1e-11),
+    ("co2", 1e-10),
+    ("co2", 1e-9),
+    ("co2", 1e-8),
+    ("h2o", 1e-11),
+    ("h2o", 1e-9),
+];
+
 /// `("CO2 60 um, T_vis = 1e-9 s", contact, t_vis)` for each `(material, t_vis)` of `list`
 /// (`"co2"` or `"h2o"`, T_vis in s).
 pub fn cases(list: &[(&str, f64)]) -> Vec<(String, Contact, f64)> {
