@@ -138,23 +138,25 @@ impl<'a> Elements<'a> {
         }
     }
 
-    /// The contact of element `i` (its gamma_sv, if given per element); the last one made on
-    /// this thread is reused when element `i` has the same inputs (a scalar radius broadcast
-    /// over T_vis, a sampler's walkers at one radius): a contact costs a third of a table answer.
-    pub fn contact(&self, i: usize) -> Result<Contact, Error> {
+    /// The contact of element `i` (its gamma_sv, if given per element) and whether it has
+    /// warnings ([`Contact::warnings`]); the last one made on this thread is reused when element
+    /// `i` has the same inputs (a scalar radius broadcast over T_vis, a sampler's walkers at one
+    /// radius): a contact costs a third of a table answer, asking for its warnings a twentieth.
+    pub fn contact(&self, i: usize) -> Result<(Contact, bool), Error> {
         let mut m = self.material.inner;
         if let Some(g) = self.gamma_sv {
             m.gamma_sv = g[i];
         }
         let g = self.geometry(i);
-        if let Some((pm, pg, pc)) = LAST_CONTACT.with(|c| c.get()) {
+        if let Some((pm, pg, pc, warns)) = LAST_CONTACT.with(|c| c.get()) {
             if pm == m && pg == g {
-                return Ok(pc);
+                return Ok((pc, warns));
             }
         }
         let c = Contact::new(m, g).map_err(|e| Error::from_contact(e, i))?;
-        LAST_CONTACT.with(|last| last.set(Some((m, g, c))));
-        Ok(c)
+        let warns = !c.warnings().is_empty();
+        LAST_CONTACT.with(|last| last.set(Some((m, g, c, warns))));
+        Ok((c, warns))
     }
 
     /// The crack law of element `i`'s k.
@@ -170,18 +172,24 @@ impl<'a> Elements<'a> {
         f: impl Fn(usize, &Contact) -> Result<(T, Warned), Error> + Sync + Send,
     ) -> PyResult<Vec<(T, Warned)>> {
         crate::parallel::map(py, self.n, |i| {
-            let c = self.contact(i)?;
-            let (value, mut own) = f(i, &c)?;
+            let (c, warns) = self.contact(i)?;
+            let (value, own) = f(i, &c)?;
+            if !warns {
+                return Ok((value, own));
+            }
             let mut all = warned(i, c.warnings());
-            all.append(&mut own);
+            all.extend(own);
             Ok((value, all))
         })
     }
 }
 
+/// A contact with its material, geometry and whether it has warnings.
+type LastContact = (thresholds::Material, Geometry, Contact, bool);
+
 thread_local! {
     /// The last contact made on this thread, with its material and geometry.
-    static LAST_CONTACT: std::cell::Cell<Option<(thresholds::Material, Geometry, Contact)>> =
+    static LAST_CONTACT: std::cell::Cell<Option<LastContact>> =
         const { std::cell::Cell::new(None) };
 }
 

@@ -15,7 +15,7 @@
 //! plain up to an x, sheared down to a distance to the end.
 
 use super::binary::{self, Piece, Table};
-use super::interp::{interval, lagrange, local_cubic, local_cubic_both, stencil_start};
+use super::interp::{interval, lagrange, local_cubic, local_cubic_both, stencil_start, weights4};
 
 /// Which piece of the rows, and which ratio.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -178,8 +178,10 @@ impl Table {
             let [a, b] = local_cubic_both(&p.u, [&p.g[0], &p.g[1]], u);
             (g[0][q], g[1][q]) = (a, b);
         }
-        let ys = &self.ys[s..s + 4];
-        let both = [lagrange(ys, &g[0], y), lagrange(ys, &g[1], y)];
+        // the weights of the four rows at y once for both ratios (lagrange's sum, term for term)
+        let w = weights4(&self.ys[s..s + 4], y);
+        let at_y = |g: &[f64; 4]| w[0] * g[0] + w[1] * g[1] + w[2] * g[2] + w[3] * g[3];
+        let both = [at_y(&g[0]), at_y(&g[1])];
         both.iter().all(|g| g.is_finite()).then_some(both)
     }
 
