@@ -184,6 +184,7 @@ class Model:
         # the thresholds are searched up to the fastest speed the data need (None: only
         # restitution data, no threshold needed)
         self.v_max = data.fastest() or None
+        self.outcomes = None if data.sticking is None else Outcomes(*data.sticking, sizes.weights)
         nodes = min(RESTITUTION_NODES, len(sizes))
         if nodes == len(sizes):
             self.e_radii, self.e_weights = sizes.radii, sizes.weights
@@ -254,11 +255,8 @@ class Model:
                 q = (clipped[:, 0] if clipped.shape[1] == 1
                      else weighted_quantile(clipped, self.sizes.weights, self.quantile))
                 total += -0.5 * ((np.asarray(q) - value) / sigma) ** 2
-            if data.sticking is not None:
-                v, stuck = data.sticking
-                p = stuck_probability(vs, self.sizes.weights, v)
-                with np.errstate(divide="ignore"):
-                    total += np.log(p[:, stuck]).sum(axis=1) + np.log1p(-p[:, ~stuck]).sum(axis=1)
+            if self.outcomes is not None:
+                total += self.outcomes.log_likelihood(vs)
         if data.restitution is not None:
             _, e, e_err = data.restitution
             model = self.e_observed(t_vis, gamma_sv)
@@ -270,25 +268,59 @@ class Model:
         return total
 
 
+class Outcomes:
+    """Sticking outcomes (speeds ``v`` in m/s, ``stuck`` booleans) prepared once for the
+    likelihood of a sample of radii with ``weights``: the speeds sorted, the outcomes in that
+    order, the walkers' offsets and weights of each number of walkers kept (a sampler asks with
+    the same few shapes thousands of times)."""
+
+    def __init__(self, v: np.ndarray, stuck: np.ndarray, weights: np.ndarray) -> None:
+        self.order = np.argsort(v, kind="stable")
+        self.sorted_v = v[self.order]
+        self.stuck = stuck[self.order]
+        self.weights = weights
+        self._shaped: Dict[int, Tuple[np.ndarray, np.ndarray]] = {}
+
+    def sorted_probability(self, v_stick: np.ndarray) -> np.ndarray:
+        """P(stuck | v): for each walker (row of ``v_stick``, its V_stick at each radius, m/s)
+        and each sorted speed, the weight of the radii with ``v < V_stick(R)``; shape (walkers,
+        speeds). Each V_stick is placed among the sorted speeds once (one search for the whole
+        array) and its weight added from there down: comparing every speed with every radius
+        costs a sampler a millisecond a step at 300 speeds and 64 radii, a search a row a third
+        of that."""
+        rows, radii = v_stick.shape
+        n = self.sorted_v.size
+        shaped = self._shaped.get(rows)
+        if shaped is None:
+            shaped = self._shaped.setdefault(rows, (
+                np.arange(rows)[:, None] * (n + 1),
+                np.ascontiguousarray(np.broadcast_to(self.weights, (rows, radii))).ravel(),
+            ))
+        offsets, weights = shaped
+        # the speeds strictly below each V_stick: they stick at that radius
+        below = np.searchsorted(self.sorted_v, v_stick, side="left")
+        # the weight of the radii with exactly p speeds below, per row; then summed from p = j + 1
+        # up
+        at = np.bincount((offsets + below).ravel(), weights=weights,
+                         minlength=rows * (n + 1)).reshape(rows, n + 1)
+        # summed from the top, each over the sum of all weights: where every radius sticks that
+        # is the same sum in the same order, so P = 1 exactly and 1 - P = 0 (as P = 0 exactly
+        # where none does), whatever the weights' sum rounds to
+        above = np.cumsum(at[:, ::-1], axis=1)[:, ::-1]
+        return np.minimum(above[:, 1:] / above[:, :1], 1.0)
+
+    def log_likelihood(self, v_stick: np.ndarray) -> np.ndarray:
+        """ln L of the outcomes for each walker: the sum of ln P(stuck | v) over the collisions
+        that stuck and ln(1 - P) over those that bounced (``-inf`` where one is impossible)."""
+        p = self.sorted_probability(v_stick)
+        with np.errstate(divide="ignore"):
+            return np.log(np.where(self.stuck, p, 1.0 - p)).sum(axis=1)
+
+
 def stuck_probability(v_stick: np.ndarray, weights: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """P(stuck | v): for each walker (row of ``v_stick``, its V_stick at each radius, m/s) and
-    each impact speed ``v`` (m/s), the weight of the radii with ``v < V_stick(R)``; shape
-    (walkers, speeds). Each V_stick is placed among the sorted speeds once (one search for the
-    whole array) and its weight added from there down: comparing every speed with every radius
-    costs a sampler a millisecond a step at 300 speeds and 64 radii, a search a row a third of
-    that."""
-    rows, radii = v_stick.shape
-    order = np.argsort(v, kind="stable")
-    # the speeds strictly below each V_stick: they stick at that radius
-    below = np.searchsorted(v[order], v_stick, side="left")
-    # the weight of the radii with exactly p speeds below, per row; then summed from p = j + 1 up
-    at = np.bincount((np.arange(rows)[:, None] * (v.size + 1) + below).ravel(),
-                     weights=np.broadcast_to(weights, (rows, radii)).ravel(),
-                     minlength=rows * (v.size + 1)).reshape(rows, v.size + 1)
-    # summed from the top, each over the sum of all weights: where every radius sticks that is
-    # the same sum in the same order, so P = 1 exactly and log1p(-P) = -inf (as P = 0 exactly
-    # where none does), whatever the weights' sum rounds to
-    above = np.cumsum(at[:, ::-1], axis=1)[:, ::-1]
-    p = np.empty((rows, v.size))
-    p[:, order] = above[:, 1:] / above[:, :1]
-    return np.minimum(p, 1.0)
+    """P(stuck | v) for each walker (row of ``v_stick``, m/s) and each speed of ``v`` (m/s, in
+    its order): the weight of the radii with ``v < V_stick(R)`` (``Outcomes``)."""
+    o = Outcomes(v, np.zeros(v.size, dtype=bool), weights)
+    p = np.empty((v_stick.shape[0], v.size))
+    p[:, o.order] = o.sorted_probability(v_stick)
+    return p
