@@ -359,14 +359,20 @@ def infer(
 
     def log_prob(theta: np.ndarray) -> np.ndarray:
         theta = np.atleast_2d(theta)
+        inside = ((theta >= lo) & (theta <= hi)).all(axis=1)
+        if inside.all():
+            # the common case, every proposal inside the priors: no masks
+            return model.log_likelihood(*model_args(10.0 ** theta))
         out = np.full(theta.shape[0], -np.inf)
-        inside = np.all((theta >= lo) & (theta <= hi), axis=1)
         if inside.any():
-            x = 10.0 ** theta[inside]
-            t = x[:, column["t_vis"]] if "t_vis" in column else np.full(x.shape[0], fixed["t_vis"])
-            g = x[:, column["gamma_sv"]] if "gamma_sv" in column else None
-            out[inside] = model.log_likelihood(t, g)
+            out[inside] = model.log_likelihood(*model_args(10.0 ** theta[inside]))
         return out
+
+    def model_args(x: np.ndarray) -> Tuple[np.ndarray, Optional[np.ndarray]]:
+        """T_vis and gamma_SV (None: the material's) of the parameter rows ``x``."""
+        t = x[:, column["t_vis"]] if "t_vis" in column else np.full(x.shape[0], fixed["t_vis"])
+        g = x[:, column["gamma_sv"]] if "gamma_sv" in column else None
+        return t, g
 
     rng = np.random.default_rng(seed)
     seeds = _seeds(model, free, fixed, lo, hi)

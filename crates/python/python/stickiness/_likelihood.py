@@ -185,6 +185,7 @@ class Model:
         # restitution data, no threshold needed)
         self.v_max = data.fastest() or None
         self.outcomes = None if data.sticking is None else Outcomes(*data.sticking, sizes.weights)
+        self._fixed_by_walkers: Dict[int, Tuple[np.ndarray, Optional[np.ndarray], np.ndarray]] = {}
         nodes = min(RESTITUTION_NODES, len(sizes))
         if nodes == len(sizes):
             self.e_radii, self.e_weights = sizes.radii, sizes.weights
@@ -207,17 +208,30 @@ class Model:
     def v_stick(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
         """V_stick (m/s) of shape (walkers, radii); ``inf`` where it lies beyond the search
         limit (no bouncing up to it). One core call for every walker and radius."""
-        radii = self.sizes.radii
-        n, r = t_vis.size, radii.size
+        n, r = t_vis.size, self.sizes.radii.size
         # radius-major: the walkers at one radius follow each other, so that the core makes
         # each radius's contact once (a contact costs a quarter of a table answer)
         g = None if gamma_sv is None else np.tile(gamma_sv, r)
+        radii, second, k = self._fixed(n)
         d = self._call(
-            _core.v_stick, self.material, np.repeat(radii, n), self._second(n * r), self.wall,
-            np.tile(t_vis, r), np.full(n * r, self.k), self.v_max, self.rel_tol, self.method, g,
+            _core.v_stick, self.material, radii, second, self.wall,
+            np.ascontiguousarray(t_vis) if r == 1 else np.tile(t_vis, r), k,
+            self.v_max, self.rel_tol, self.method, g,
         )
         vs = np.asarray(d["v_stick"]).reshape(r, n).T
         return np.where(np.isnan(vs), np.inf, vs)
+
+    def _fixed(self, n: int) -> Tuple[np.ndarray, Optional[np.ndarray], np.ndarray]:
+        """The arguments of :meth:`v_stick`'s core call that do not change between a sampler's
+        steps, for ``n`` walkers (kept; read only): the radii, each repeated n times, the
+        second radius and k."""
+        fixed = self._fixed_by_walkers.get(n)
+        if fixed is None:
+            r = self.sizes.radii.size
+            fixed = self._fixed_by_walkers.setdefault(n, (
+                np.repeat(self.sizes.radii, n), self._second(n * r), np.full(n * r, self.k),
+            ))
+        return fixed
 
     def e_observed(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
         """The observed e (0 for sticking and double collisions, Section 4.4) of shape

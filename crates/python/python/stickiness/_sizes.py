@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import math
 from statistics import NormalDist
 from typing import Any, Optional
@@ -144,6 +145,13 @@ class SizeDistribution:
         )
 
 
+@functools.lru_cache(maxsize=64)
+def _row_starts(rows: int, n: int) -> np.ndarray:
+    """The flat index of each row's first element, as a column: ``rows`` rows of ``n`` (kept:
+    a sampler asks with the same few shapes; read only)."""
+    return (np.arange(rows) * n)[:, None]
+
+
 def weighted_quantile(values: Any, weights: Any, q: float) -> Any:
     """The quantile ``q`` of ``values`` along the last axis with ``weights`` (sum 1): linear
     interpolation between the nodes' mid-weights (i + 1/2)/n for equal weights, clamped to the
@@ -153,18 +161,22 @@ def weighted_quantile(values: Any, weights: Any, q: float) -> Any:
     lead = v.shape[:-1]
     n = v.shape[-1]
     v = v.reshape(-1, n)
-    w = np.broadcast_to(np.asarray(weights, dtype=float), lead + (n,)).reshape(-1, n)
-    # fancy indexing with the rows' index, not take_along_axis: a sampler calls this at every
-    # step for all walkers, and take_along_axis builds its index in Python each time
-    rows = np.arange(v.shape[0])
+    w = np.asarray(weights, dtype=float)
+    # each row sorted by one flat take with the rows' offsets, and the ufuncs themselves, not
+    # np.clip or take_along_axis (Python wrappers of a few microseconds each): a sampler calls
+    # this at every step for all walkers
+    starts = _row_starts(v.shape[0], n)
     order = np.argsort(v, axis=-1, kind="stable")
-    v, w = v[rows[:, None], order], w[rows[:, None], order]
+    flat = order + starts
+    v = v.ravel()[flat]
+    w = w[order] if w.ndim == 1 else np.broadcast_to(w, lead + (n,)).reshape(-1, n).ravel()[flat]
     mid = np.cumsum(w, axis=-1) - 0.5 * w
-    j = np.clip(np.sum(mid < q, axis=-1), 1, max(n - 1, 1))
+    j = np.minimum(np.maximum(np.count_nonzero(mid < q, axis=-1), 1), max(n - 1, 1))
     lo, hi = np.maximum(j - 1, 0), np.minimum(j, n - 1)
-    a, b = v[rows, lo], v[rows, hi]
-    ma, mb = mid[rows, lo], mid[rows, hi]
+    at_lo, at_hi = starts[:, 0] + lo, starts[:, 0] + hi
+    a, b = v.ravel()[at_lo], v.ravel()[at_hi]
+    ma, mb = mid.ravel()[at_lo], mid.ravel()[at_hi]
     with np.errstate(invalid="ignore", divide="ignore"):
-        f = np.clip(np.where(mb > ma, (q - ma) / (mb - ma), 0.0), 0.0, 1.0)
+        f = np.minimum(np.maximum(np.where(mb > ma, (q - ma) / (mb - ma), 0.0), 0.0), 1.0)
         out = np.where(f == 0.0, a, np.where(f == 1.0, b, a + f * (b - a))).reshape(lead)
     return float(out) if out.ndim == 0 else out
