@@ -2,10 +2,9 @@
 
 from __future__ import annotations
 
-import functools
 import math
 from statistics import NormalDist
-from typing import Any, Optional
+from typing import Any, Dict, Optional, Tuple
 
 import numpy as np
 
@@ -145,11 +144,22 @@ class SizeDistribution:
         )
 
 
-@functools.lru_cache(maxsize=64)
+#: The row offsets of :func:`_row_starts` by shape; a sampler asks with the same few.
+_ROW_STARTS: Dict[Tuple[int, int], np.ndarray] = {}
+
+#: The most shapes :data:`_ROW_STARTS` keeps (cleared when full).
+_ROW_STARTS_KEPT = 64
+
+
 def _row_starts(rows: int, n: int) -> np.ndarray:
     """The flat index of each row's first element, as a column: ``rows`` rows of ``n`` (kept:
-    a sampler asks with the same few shapes; read only)."""
-    return (np.arange(rows) * n)[:, None]
+    read only)."""
+    starts = _ROW_STARTS.get((rows, n))
+    if starts is None:
+        if len(_ROW_STARTS) >= _ROW_STARTS_KEPT:
+            _ROW_STARTS.clear()
+        starts = _ROW_STARTS.setdefault((rows, n), (np.arange(rows) * n)[:, None])
+    return starts
 
 
 def weighted_quantile(values: Any, weights: Any, q: float) -> Any:
