@@ -70,6 +70,14 @@ enum Command {
         /// tables: what a table built with `--only` leaves to do.
         #[arg(long, conflicts_with_all = ["only", "check"])]
         k_cells: bool,
+        /// With `--only`: refine those committed tables in y where their cells fail between
+        /// rows (a row halfway, the cells around it checked again); run `--k-cells` after.
+        #[arg(long, conflicts_with_all = ["check", "k_cells"], requires = "only")]
+        refine: bool,
+        /// Check every cell of the committed tables (or those of `--only`) again, the bouncing
+        /// cells apart (a double-collision miss next to the onset no longer refuses bouncing).
+        #[arg(long, conflicts_with_all = ["check", "k_cells", "refine"])]
+        recheck: bool,
     },
     /// Build the Python package's wheel (maturin, PyO3's stable ABI: one wheel for every
     /// CPython 3.9 or newer on this platform, checked for manylinux compliance) into
@@ -105,6 +113,14 @@ fn main() -> ExitCode {
         Command::RestitutionTable { check: true, .. } => {
             xtask::restitution_table::run_check(&workspace_root())
         }
+        Command::RestitutionTable {
+            refine: true, only, ..
+        } => xtask::restitution_table::run_refine(&workspace_root(), &only),
+        Command::RestitutionTable {
+            recheck: true,
+            only,
+            ..
+        } => xtask::restitution_table::run_recheck(&workspace_root(), &only),
         Command::RestitutionTable { k_cells: true, .. } => {
             xtask::restitution_table::run_k_cells(&workspace_root())
         }

@@ -1,8 +1,11 @@
-//! `cargo xtask restitution-table [--check | --only I,.. | --k-cells]`: build the restitution
-//! tables (V_out and e of single collisions over the dimensionless numbers, k and the impact speed) from the ODE and
+//! `cargo xtask restitution-table [--check | --only I,.. | --k-cells | --refine --only I,.. |
+//! --recheck [--only I,..]]`:
+//! build the restitution tables (V_out and e of single collisions over the dimensionless numbers, k and the impact speed) from the ODE and
 //! write them to `crates/thresholds/data/restitution_k<k>.csv`, or recompute a sample of their
 //! values and fail if the model no longer gives them. They stand on the committed master
-//! tables (V_stick and V_double_onset at every node), so build those first.
+//! tables (V_stick and V_double_onset at every node), so build those first. `--refine` adds
+//! rows to committed tables where their cells fail between rows
+//! ([`thresholds::restitution::refine`]); run `--k-cells` after it.
 
 use crate::figures::Error;
 use crate::master_table::{committed_ends, data_dir};
@@ -10,8 +13,10 @@ use numerics::format::number;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use thresholds::master::build::grid_k;
-use thresholds::restitution::build::{build_table, k_cells, ratios, BuildConfig};
+use thresholds::restitution::build::{build_table, ratios, BuildConfig};
+use thresholds::restitution::check::k_cells;
 use thresholds::restitution::format::{parse, TableData};
+use thresholds::restitution::refine::{recheck_table, refine_table};
 use thresholds::restitution::to_text;
 use thresholds::{CrackLaw, MasterTables};
 
@@ -71,6 +76,67 @@ pub fn run_build(root: &Path, only: &[usize]) -> Result<(), Error> {
     }
     if only.is_empty() {
         write_k_cells(root, &cfg, &progress)?;
+    }
+    Ok(())
+}
+
+/// Refines the committed tables of these indices (k = 0.005 2^(i/3)) in y where their cells
+/// fail, and writes them; their k cells are cleared (run `--k-cells` after).
+pub fn run_refine(root: &Path, only: &[usize]) -> Result<(), Error> {
+    /// Two passes: the first halves the rows' spacing where cells fail (0.25 -> 0.125), the
+    /// second where they still fail.
+    const PASSES: usize = 2;
+    let start = Instant::now();
+    let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
+    if only.is_empty() {
+        return Err("--refine needs --only I,..: the tables to refine (an hour of collisions for all eleven)".into());
+    }
+    let (cfg, ends, masters) = (
+        BuildConfig::standard(),
+        committed_ends(root)?,
+        MasterTables::standard(),
+    );
+    require_masters(masters)?;
+    let mut tables = committed(root)?;
+    for &i in only {
+        let k = grid_k(ends.k0, 3, i);
+        let Some(t) = tables.iter_mut().find(|t| (t.k / k - 1.0).abs() < 1e-9) else {
+            return Err(format!("no committed restitution table of k = {k} (index {i}): build it first (--only {i})").into());
+        };
+        let added = refine_table(&cfg, t, i, &ends, masters, PASSES, &progress)?;
+        std::fs::write(table_path(root, t.k), to_text(t))?;
+        progress(&format!(
+            "k = {k}: {added} rows added; wrote {}",
+            table_path(root, t.k).display()
+        ));
+    }
+    Ok(())
+}
+
+/// Checks every cell of the committed tables (or `only` these indices) again, the bouncing
+/// cells apart, and writes them (their k cells kept).
+pub fn run_recheck(root: &Path, only: &[usize]) -> Result<(), Error> {
+    let start = Instant::now();
+    let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
+    let (cfg, ends, masters) = (
+        BuildConfig::standard(),
+        committed_ends(root)?,
+        MasterTables::standard(),
+    );
+    require_masters(masters)?;
+    for mut t in committed(root)? {
+        let i =
+            (0..BuildConfig::TABLES).find(|&i| (grid_k(ends.k0, 3, i) / t.k - 1.0).abs() < 1e-9);
+        if !only.is_empty() && !i.is_some_and(|i| only.contains(&i)) {
+            continue;
+        }
+        recheck_table(&cfg, &mut t, masters, &progress)?;
+        std::fs::write(table_path(root, t.k), to_text(&t))?;
+        progress(&format!(
+            "k = {}: cells checked again; wrote {}",
+            t.k,
+            table_path(root, t.k).display()
+        ));
     }
     Ok(())
 }

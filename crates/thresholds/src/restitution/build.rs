@@ -10,15 +10,13 @@
 //! centre at a few speeds between the channels against the ODE ([`BuildConfig::tol_e`]), and
 //! each interval between tables of neighbouring k at its middle k.
 //!
-//! State (pilot at k = 0.01, 2026-11-25): along the rows this converges (130-170 nodes a row,
-//! 4.5 min on 2 cores for the whole table), but the cells vouch for 10-75 % only: between rows
-//! 0.5 apart in y, e misses by 1e-4 to 3e-4 at middle c_D (rows must be refined in y as the
-//! master tables' are), and between the first channels (sigma = 0 and 0.05) e misses by up to
-//! 8e-3 just above V_stick (-e^2 is not smooth enough in sigma there: a finer or graded first
-//! channel step, or another variable, is needed). No table is committed until the cells hold.
+//! The cells are checked in [`super::check`]; where the bouncing cells fail between rows,
+//! [`super::refine`] adds rows. The pilot at k = 0.01 (2026-11-25) converged along the rows
+//! (130-170 nodes a row) while its cells, rows 0.5 apart, vouched for 10-75 % only: the rows
+//! went to 0.25 apart, the channels to even steps in ln sigma + sigma and logit nu.
 
-use super::format::{channel_at, channel_coordinate, NodeData, RowData, Table, TableData};
-use super::{RestitutionTables, MIN_WINDOW};
+use super::format::{channel_at, channel_coordinate, NodeData, RowData, TableData};
+use super::MIN_WINDOW;
 use crate::master::build::{grid_k, synthetic};
 use crate::master::format::EndsData;
 use crate::master::{MasterTables, F_TOP};
@@ -123,7 +121,13 @@ pub const SIGMA_MIN: f64 = 1e-4;
 pub const NU_MAX: f64 = 0.999;
 
 /// `(outcome, V_out / V_stick,JKR)` of one collision at `(x, y)` for `law`, at `s` V_stick,JKR.
-fn collide(cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64, s: f64) -> Option<(Outcome, f64)> {
+pub(super) fn collide(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    x: f64,
+    y: f64,
+    s: f64,
+) -> Option<(Outcome, f64)> {
     let (contact, t_vis) = synthetic(x, y.min(x + 8.0), 1.0).ok()?;
     let jkr = contact.v_stick_jkr();
     let c = Collider::new(contact, law, t_vis)
@@ -184,7 +188,7 @@ pub fn ratios(masters: &MasterTables, x: f64, y: f64, k: f64) -> Option<(f64, f6
 
 /// e = -V_out / V_in from the channel value `h` at `s` V_stick,JKR with V_stick = `f`
 /// V_stick,JKR.
-fn e_of(h: f64, f: f64, s: f64, bouncing: bool) -> f64 {
+pub(super) fn e_of(h: f64, f: f64, s: f64, bouncing: bool) -> f64 {
     let e = h.exp() * f / s;
     if bouncing {
         e
@@ -291,7 +295,7 @@ fn refine_row(
 }
 
 /// One row of the table of `law`'s k at `y` ending at `x_s`.
-fn build_row(
+pub(super) fn build_row(
     cfg: &BuildConfig,
     law: &CrackLaw,
     masters: &MasterTables,
@@ -320,64 +324,9 @@ fn build_row(
         x_s,
         nodes,
         cells,
+        bcells: Vec::new(),
         kcells: Vec::new(),
     }
-}
-
-/// Whether the tables' e at `(x, y, k)` is within `tol_e` of the ODE at every check speed.
-fn check_point(
-    cfg: &BuildConfig,
-    law: &CrackLaw,
-    tables: &RestitutionTables,
-    masters: &MasterTables,
-    x: f64,
-    y: f64,
-) -> bool {
-    let Some((f, f_on)) = ratios(masters, x, y, law.k()) else {
-        return false;
-    };
-    let window = (f / f_on).ln();
-    let speeds = cfg.check_sigma.iter().map(|&q| (true, q)).chain(
-        cfg.check_nu
-            .iter()
-            .map(|&q| (false, q))
-            .filter(|_| window >= MIN_WINDOW),
-    );
-    for (bouncing, q) in speeds {
-        let s = if bouncing {
-            f * q.exp()
-        } else {
-            f * (-q * window).exp()
-        };
-        // speeds the tables leave to the ODE (next to V_stick or the onset) are not checked
-        if s > F_TOP || super::channel_of(s, f, f_on).is_none() {
-            continue;
-        }
-        // where the tables decline (a channel without value in the stencil) they claim nothing
-        let Some(h) = tables.h_unchecked(x, y, law.k(), bouncing, q) else {
-            continue;
-        };
-        let Some((outcome, v_out)) = collide(cfg, law, x, y, s) else {
-            return false;
-        };
-        let exact = if outcome == Outcome::Sticking {
-            0.0
-        } else {
-            -v_out / s
-        };
-        if (e_of(h, f, s, bouncing) - exact).abs() > cfg.tol_e {
-            return false;
-        }
-    }
-    true
-}
-
-/// The centre of the cell of row `j`'s interval `i` (its nodes in increasing x).
-fn centre(rows: &[RowData], j: usize, i: usize) -> (f64, f64) {
-    let r = &rows[j];
-    let (a, b) = (r.nodes[i].x, r.nodes[i + 1].x);
-    let u = 0.5 * ((r.x_s - a).ln() + (r.x_s - b).ln());
-    (r.x_s - u.exp(), 0.5 * (r.y + rows[j + 1].y))
 }
 
 /// The table of the master tables' `k_index`-th k, on their end curves `ends`.
@@ -418,66 +367,7 @@ pub fn build_table(
         nu: cfg.nu.clone(),
         rows,
     };
-    let tables = RestitutionTables::from_parts(vec![Table::from_data(&table)]);
-    let checks: Vec<(usize, Vec<bool>)> = (0..table.rows.len().saturating_sub(1))
-        .into_par_iter()
-        .map(|j| {
-            let flags = (0..table.rows[j].nodes.len().saturating_sub(1))
-                .map(|i| {
-                    let (x, y) = centre(&table.rows, j, i);
-                    check_point(cfg, &law, &tables, masters, x, y)
-                })
-                .collect();
-            (j, flags)
-        })
-        .collect();
-    for (j, flags) in checks {
-        let good = flags.iter().filter(|&&b| b).count();
-        progress(&format!(
-            "restitution k = {k}, cells of row {j}: {good} of {} vouched",
-            flags.len()
-        ));
-        table.rows[j].cells = flags;
-    }
+    let all = vec![true; table.rows.len()];
+    super::check::check_cells(cfg, &law, &mut table, masters, &all, progress);
     Ok(table)
-}
-
-/// Fills the k cells of `tables` (in increasing k): each cell of table i checked at the middle
-/// k between it and table i + 1 with the cubic in ln k.
-pub fn k_cells(
-    cfg: &BuildConfig,
-    tables: &mut [TableData],
-    masters: &MasterTables,
-    progress: &(dyn Fn(&str) + Sync),
-) -> Result<(), ThresholdsError> {
-    let all = RestitutionTables::from_parts(tables.iter().map(Table::from_data).collect());
-    for i in 0..tables.len().saturating_sub(1) {
-        let k_mid = (tables[i].k * tables[i + 1].k).sqrt();
-        let law = CrackLaw::new(k_mid)?;
-        let rows = &tables[i].rows;
-        let flags: Vec<Vec<bool>> = (0..rows.len())
-            .into_par_iter()
-            .map(|j| {
-                if j + 1 >= rows.len() {
-                    return vec![false; rows[j].nodes.len().saturating_sub(1)];
-                }
-                (0..rows[j].nodes.len().saturating_sub(1))
-                    .map(|c| {
-                        let (x, y) = centre(rows, j, c);
-                        check_point(cfg, &law, &all, masters, x, y)
-                    })
-                    .collect()
-            })
-            .collect();
-        let good: usize = flags.iter().map(|f| f.iter().filter(|&&b| b).count()).sum();
-        progress(&format!(
-            "restitution k cells between k = {} and {}: {good} vouched",
-            tables[i].k,
-            tables[i + 1].k
-        ));
-        for (r, f) in tables[i].rows.iter_mut().zip(flags) {
-            r.kcells = f;
-        }
-    }
-    Ok(())
 }

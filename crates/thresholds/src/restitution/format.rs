@@ -10,6 +10,7 @@
 //! row,<y>,<x_s>                a row of constant y = log10(c_D c_a), its end x_s
 //! rnode,<x>,<F>,<F_on>,<h...>  a node: x = log10 c_D, the ratios, h at every channel (nan: none)
 //! cells,<0|1 ...>              per interval of this row's nodes: its cell to the next row vouched
+//! bcells,<0|1 ...>             the same cells vouched for bouncing alone (absent: as cells)
 //! kcells,<0|1 ...>             the same cells, for the cubic in ln k up to the next table
 //! ```
 //! h is `ln(|V_out| / V_stick)` at every channel: V_out < 0 (bouncing) above V_stick, > 0
@@ -86,6 +87,9 @@ pub struct RowData {
     pub nodes: Vec<NodeData>,
     /// Per interval of the nodes: the cell from this row to the next vouched for.
     pub cells: Vec<bool>,
+    /// The same cells vouched for the bouncing channels alone (empty: as `cells`): next to
+    /// the onset of double collisions the double-collision channels miss where bouncing holds.
+    pub bcells: Vec<bool>,
     /// The same cells, vouched for the cubic in ln k up to the next table.
     pub kcells: Vec<bool>,
 }
@@ -182,6 +186,7 @@ pub fn parse(text: &str) -> Result<TableData, FormatError> {
                     x_s: v[1],
                     nodes: Vec::new(),
                     cells: Vec::new(),
+                    bcells: Vec::new(),
                     kcells: Vec::new(),
                 });
             }
@@ -205,16 +210,16 @@ pub fn parse(text: &str) -> Result<TableData, FormatError> {
                     h: v[3..].to_vec(),
                 });
             }
-            "cells" | "kcells" => {
+            "cells" | "bcells" | "kcells" => {
                 let b = bits(n, fields.get(1))?;
                 let row = t
                     .rows
                     .last_mut()
                     .ok_or_else(|| bad("cells before any row"))?;
-                if fields[0] == "cells" {
-                    row.cells = b;
-                } else {
-                    row.kcells = b;
+                match fields[0] {
+                    "cells" => row.cells = b,
+                    "bcells" => row.bcells = b,
+                    _ => row.kcells = b,
                 }
             }
             other => return Err(bad(&format!("unknown record '{other}'"))),
@@ -222,7 +227,9 @@ pub fn parse(text: &str) -> Result<TableData, FormatError> {
     }
     let cells_fit = t.rows.iter().all(|r| {
         let m = r.nodes.len().saturating_sub(1);
-        r.cells.len() == m && (r.kcells.is_empty() || r.kcells.len() == m)
+        r.cells.len() == m
+            && (r.bcells.is_empty() || r.bcells.len() == m)
+            && (r.kcells.is_empty() || r.kcells.len() == m)
     });
     if !(t.k > 0.0 && t.k < 1.0 && !t.sigma.is_empty() && t.nu.len() >= 2 && cells_fit) {
         return Err(FormatError {
@@ -247,6 +254,8 @@ pub struct Row {
     pub h: Floats,
     /// Cell flags in the same (decreasing x) order of intervals.
     pub cells: Vec<bool>,
+    /// Cell flags of the bouncing channels alone, likewise (`cells` where the text had none).
+    pub bcells: Vec<bool>,
     /// k-cell flags likewise (empty: none).
     pub kcells: Vec<bool>,
 }
@@ -290,6 +299,11 @@ impl Table {
                         .collect::<Vec<_>>()
                         .into(),
                     cells: rev(&r.cells),
+                    bcells: rev(if r.bcells.is_empty() {
+                        &r.cells
+                    } else {
+                        &r.bcells
+                    }),
                     kcells: rev(&r.kcells),
                 }
             })
@@ -309,7 +323,7 @@ impl Table {
 }
 
 /// The binary form's first bytes.
-const MAGIC: &[u8; 8] = b"STKRT001";
+const MAGIC: &[u8; 8] = b"STKRT002";
 
 /// The binary form of `tables` ([`crate::bytes`]; they share nothing).
 pub fn to_bytes(tables: &[TableData]) -> Vec<u8> {
@@ -327,6 +341,7 @@ pub fn to_bytes(tables: &[TableData]) -> Vec<u8> {
                 w.fs(&r.u);
                 w.fs(&r.h);
                 w.flags(&r.cells);
+                w.flags(&r.bcells);
                 w.flags(&r.kcells);
             });
             (t.k, w.0)
@@ -347,13 +362,14 @@ pub fn table_from_bytes(bytes: &'static [u8], i: usize) -> Option<Table> {
     let rows = r.list(|r| {
         let (y, x_s) = (r.f()?, r.f()?);
         let (u, h) = (r.fs_borrowed()?, r.fs_borrowed()?);
-        let (cells, kcells) = (r.flags()?, r.flags()?);
+        let (cells, bcells, kcells) = (r.flags()?, r.flags()?, r.flags()?);
         Some(Row {
             y,
             x_s,
             u,
             h,
             cells,
+            bcells,
             kcells,
         })
     })?;

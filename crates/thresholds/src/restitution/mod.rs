@@ -40,7 +40,9 @@
 //! ```
 
 pub mod build;
+pub mod check;
 pub mod format;
+pub mod refine;
 
 use crate::master::interp::{
     interval, lagrange, lagrange_weight, local_cubic, stencil_start, weights4,
@@ -374,7 +376,12 @@ fn table_h(
             return None;
         }
         let i = interval(&r.u, u);
-        if !r.cells.get(i).copied().unwrap_or(false)
+        // bouncing needs its own channels vouched; a double collision every channel
+        let cells = match side {
+            Side::Bouncing => &r.bcells,
+            Side::Double => &r.cells,
+        };
+        if !cells.get(i).copied().unwrap_or(false)
             || (k_checked && !r.kcells.get(i).copied().unwrap_or(false))
         {
             return None;
@@ -440,6 +447,9 @@ pub fn to_text(t: &format::TableData) -> String {
             );
         }
         let _ = writeln!(out, "cells,{}", flags(&r.cells));
+        if !r.bcells.is_empty() && r.bcells != r.cells {
+            let _ = writeln!(out, "bcells,{}", flags(&r.bcells));
+        }
         if !r.kcells.is_empty() {
             let _ = writeln!(out, "kcells,{}", flags(&r.kcells));
         }

@@ -1,0 +1,151 @@
+//! The checks of the restitution tables against the ODE: each cell between two rows at its
+//! centre, at speeds between the channels ([`BuildConfig::check_sigma`], [`BuildConfig::check_nu`]),
+//! e within [`BuildConfig::tol_e`], both sides and the bouncing side apart; each interval
+//! between tables of neighbouring k at its middle k ([`k_cells`]).
+
+use super::build::{collide, e_of, ratios, BuildConfig};
+use super::format::{RowData, Table, TableData};
+use super::{RestitutionTables, MIN_WINDOW};
+use crate::master::{MasterTables, F_TOP};
+use crate::{Outcome, ThresholdsError};
+use greenwood::CrackLaw;
+use rayon::prelude::*;
+
+/// Whether the tables' e at `(x, y, k)` is within `tol_e` of the ODE at every check speed, and
+/// at every bouncing one: `(all, bouncing)` (the bouncing speeds are checked first).
+pub(super) fn check_point(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    tables: &RestitutionTables,
+    masters: &MasterTables,
+    x: f64,
+    y: f64,
+) -> (bool, bool) {
+    let Some((f, f_on)) = ratios(masters, x, y, law.k()) else {
+        return (false, false);
+    };
+    let window = (f / f_on).ln();
+    let speeds = cfg.check_sigma.iter().map(|&q| (true, q)).chain(
+        cfg.check_nu
+            .iter()
+            .map(|&q| (false, q))
+            .filter(|_| window >= MIN_WINDOW),
+    );
+    for (bouncing, q) in speeds {
+        let s = if bouncing {
+            f * q.exp()
+        } else {
+            f * (-q * window).exp()
+        };
+        // speeds the tables leave to the ODE (next to V_stick or the onset) are not checked
+        if s > F_TOP || super::channel_of(s, f, f_on).is_none() {
+            continue;
+        }
+        // where the tables decline (a channel without value in the stencil) they claim nothing
+        let Some(h) = tables.h_unchecked(x, y, law.k(), bouncing, q) else {
+            continue;
+        };
+        // a miss on the double-collision side leaves the bouncing side checked
+        let Some((outcome, v_out)) = collide(cfg, law, x, y, s) else {
+            return (false, !bouncing);
+        };
+        let exact = if outcome == Outcome::Sticking {
+            0.0
+        } else {
+            -v_out / s
+        };
+        if (e_of(h, f, s, bouncing) - exact).abs() > cfg.tol_e {
+            return (false, !bouncing);
+        }
+    }
+    (true, true)
+}
+
+/// The centre of the cell of row `j`'s interval `i` (its nodes in increasing x).
+pub(super) fn centre(rows: &[RowData], j: usize, i: usize) -> (f64, f64) {
+    let r = &rows[j];
+    let (a, b) = (r.nodes[i].x, r.nodes[i + 1].x);
+    let u = 0.5 * ((r.x_s - a).ln() + (r.x_s - b).ln());
+    (r.x_s - u.exp(), 0.5 * (r.y + rows[j + 1].y))
+}
+
+/// The cells (and the bouncing cells) of the rows marked in `rows_to_check` checked at their
+/// centres against the ODE.
+pub(super) fn check_cells(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    table: &mut TableData,
+    masters: &MasterTables,
+    rows_to_check: &[bool],
+    progress: &(dyn Fn(&str) + Sync),
+) {
+    let tables = RestitutionTables::from_parts(vec![Table::from_data(table)]);
+    let rows = &table.rows;
+    let checks: Vec<(usize, Vec<(bool, bool)>)> = (0..rows.len().saturating_sub(1))
+        .into_par_iter()
+        .filter(|&j| rows_to_check[j])
+        .map(|j| {
+            let flags = (0..rows[j].nodes.len().saturating_sub(1))
+                .map(|i| {
+                    let (x, y) = centre(rows, j, i);
+                    check_point(cfg, law, &tables, masters, x, y)
+                })
+                .collect();
+            (j, flags)
+        })
+        .collect();
+    for (j, flags) in checks {
+        let (good, bouncing) = (
+            flags.iter().filter(|f| f.0).count(),
+            flags.iter().filter(|f| f.1).count(),
+        );
+        progress(&format!(
+            "restitution k = {}, cells of row y = {}: {good} of {} vouched, {bouncing} for bouncing",
+            table.k,
+            table.rows[j].y,
+            flags.len()
+        ));
+        table.rows[j].cells = flags.iter().map(|f| f.0).collect();
+        table.rows[j].bcells = flags.iter().map(|f| f.1).collect();
+    }
+}
+
+/// Fills the k cells of `tables` (in increasing k): each cell of table i checked at the middle
+/// k between it and table i + 1 with the cubic in ln k.
+pub fn k_cells(
+    cfg: &BuildConfig,
+    tables: &mut [TableData],
+    masters: &MasterTables,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<(), ThresholdsError> {
+    let all = RestitutionTables::from_parts(tables.iter().map(Table::from_data).collect());
+    for i in 0..tables.len().saturating_sub(1) {
+        let k_mid = (tables[i].k * tables[i + 1].k).sqrt();
+        let law = CrackLaw::new(k_mid)?;
+        let rows = &tables[i].rows;
+        let flags: Vec<Vec<bool>> = (0..rows.len())
+            .into_par_iter()
+            .map(|j| {
+                if j + 1 >= rows.len() {
+                    return vec![false; rows[j].nodes.len().saturating_sub(1)];
+                }
+                (0..rows[j].nodes.len().saturating_sub(1))
+                    .map(|c| {
+                        let (x, y) = centre(rows, j, c);
+                        check_point(cfg, &law, &all, masters, x, y).0
+                    })
+                    .collect()
+            })
+            .collect();
+        let good: usize = flags.iter().map(|f| f.iter().filter(|&&b| b).count()).sum();
+        progress(&format!(
+            "restitution k cells between k = {} and {}: {good} vouched",
+            tables[i].k,
+            tables[i + 1].k
+        ));
+        for (r, f) in tables[i].rows.iter_mut().zip(flags) {
+            r.kcells = f;
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,178 @@
+//! Refining a committed restitution table in y where its cells fail between rows
+//! (`cargo xtask restitution-table --refine --only I`).
+//!
+//! The cells of the tables built with rows every 0.25 in y fail in a band of y = -4.25 to 0.25
+//! (five to nine cells an interval of rows, at one or two decades of c_D from the cliff, in
+//! every table): there e from the tables misses the ODE by 2.5e-5 to 6e-5 at the cells'
+//! centres and by about 1e-6 on the rows themselves (k = 0.01, rows y = -1.75 to -0.75), so the
+//! miss is the cubic across the rows. Those are the grains of the laboratory experiments (CO2
+//! and H2O of 20-200 um, T_vis 1e-11 - 3e-9 s): a fifth of their collisions went to the ODE.
+//! A row halfway between two rows whose cells fail divides that miss by about sixteen; the
+//! cells whose four-row stencil the new row enters are checked again.
+
+use super::build::{build_row, BuildConfig};
+use super::check::check_cells;
+use super::format::{RowData, TableData};
+use super::CLIFF_MARGIN;
+use crate::master::build::grid_k;
+use crate::master::format::EndsData;
+use crate::master::MasterTables;
+use crate::ThresholdsError;
+use greenwood::CrackLaw;
+
+/// The band of y refined: below -4.5 the master tables of most k hold no rows (their
+/// thresholds, on which every cell stands, are missing), above 0.5 the cells hold.
+pub const REFINE_Y: (f64, f64) = (-4.5, 0.5);
+
+/// The closest two rows may come: the end curves' grid in y (1/64), on which a new row's end
+/// x_s is read.
+pub const MIN_Y_STEP: f64 = 1.0 / 64.0;
+
+/// Whether the bouncing cells from row `r` to the next fail anywhere the tables would answer
+/// (at least [`CLIFF_MARGIN`] in x from the row's end). The double-collision channels next to
+/// the onset (nu = 0.99-0.998) miss by 6e-5 to 2e-3 with rows 1/16 apart as with rows 1/4
+/// apart: a finer row spacing does not help them.
+fn fails(r: &RowData) -> bool {
+    let cells = if r.bcells.is_empty() {
+        &r.cells
+    } else {
+        &r.bcells
+    };
+    cells
+        .iter()
+        .zip(r.nodes.windows(2))
+        .any(|(&ok, pair)| !ok && r.x_s - pair[1].x >= CLIFF_MARGIN)
+}
+
+/// Adds a row halfway between every two rows of `table` (the table of the `k_index`-th k of the
+/// master tables, on their end curves `ends`) whose cells fail within [`REFINE_Y`], and checks
+/// again the cells whose stencil changed; `passes` times at most, or until no row is added.
+/// The k cells of the refined table are cleared (`cargo xtask restitution-table --k-cells`
+/// computes them again). Returns the number of rows added.
+pub fn refine_table(
+    cfg: &BuildConfig,
+    table: &mut TableData,
+    k_index: usize,
+    ends: &EndsData,
+    masters: &MasterTables,
+    passes: usize,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<usize, ThresholdsError> {
+    let law = CrackLaw::new(table.k)?;
+    // the column of the end curves' grid at the table's k (12 steps an octave, the tables 3)
+    let column = (k_index * (ends.per_octave / 3)) * ends.ny;
+    debug_assert!((grid_k(ends.k0, 3, k_index) / table.k - 1.0).abs() < 1e-9);
+    let mut added = 0;
+    for pass in 0..passes {
+        let rows = &table.rows;
+        let new: Vec<RowData> = (0..rows.len().saturating_sub(1))
+            .filter(|&j| fails(&rows[j]))
+            .map(|j| (rows[j].y, rows[j + 1].y))
+            .filter(|&(a, b)| b - a >= 2.0 * MIN_Y_STEP - 1e-12)
+            .map(|(a, b)| 0.5 * (a + b))
+            .filter(|&y| y >= REFINE_Y.0 && y <= REFINE_Y.1)
+            .filter_map(|y| {
+                let at = column + ((y - ends.y0) / ends.dy).round() as usize;
+                let x_s = *ends.x_s.get(at)?;
+                x_s.is_finite().then(|| {
+                    let r = build_row(cfg, &law, masters, y, x_s);
+                    progress(&format!(
+                        "restitution k = {}, pass {pass}, new row y = {y}: {} nodes",
+                        table.k,
+                        r.nodes.len()
+                    ));
+                    r
+                })
+            })
+            .collect();
+        if new.is_empty() {
+            break;
+        }
+        added += new.len();
+        let new_y: Vec<f64> = new.iter().map(|r| r.y).collect();
+        table.rows.extend(new);
+        table.rows.sort_by(|a, b| a.y.total_cmp(&b.y));
+        // the cells whose four-row stencil holds a new row m: intervals m - 2 ..= m + 1
+        let n = table.rows.len();
+        let mut stale = vec![false; n];
+        for (m, r) in table.rows.iter().enumerate() {
+            if new_y.contains(&r.y) {
+                stale[m.saturating_sub(2)..(m + 2).min(n)].fill(true);
+            }
+        }
+        check_cells(cfg, &law, table, masters, &stale, progress);
+    }
+    if added > 0 {
+        for r in &mut table.rows {
+            r.kcells.clear();
+        }
+        table.header.push(format!(
+            "refined: {added} rows added halfway between rows whose cells failed, y within {} .. {} (the cubic across rows; restitution::refine)",
+            REFINE_Y.0, REFINE_Y.1
+        ));
+    }
+    Ok(added)
+}
+
+/// Checks every cell of `table` again, both sides and the bouncing side alone (a table built
+/// before the bouncing cells were kept apart: its bouncing cells are then its cells).
+pub fn recheck_table(
+    cfg: &BuildConfig,
+    table: &mut TableData,
+    masters: &MasterTables,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<(), ThresholdsError> {
+    let law = CrackLaw::new(table.k)?;
+    let all = vec![true; table.rows.len()];
+    check_cells(cfg, &law, table, masters, &all, progress);
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::restitution::format::NodeData;
+
+    fn row(xs: &[f64], x_s: f64, cells: &[bool], bcells: &[bool]) -> RowData {
+        RowData {
+            y: 0.0,
+            x_s,
+            nodes: xs
+                .iter()
+                .map(|&x| NodeData {
+                    x,
+                    f: 2.0,
+                    f_on: 1.5,
+                    h: Vec::new(),
+                })
+                .collect(),
+            cells: cells.to_vec(),
+            bcells: bcells.to_vec(),
+            kcells: Vec::new(),
+        }
+    }
+
+    /// A failed cell counts where the tables would answer (at least CLIFF_MARGIN from the end,
+    /// where the answer declines anyway), and the bouncing cells decide when kept apart (a miss
+    /// next to the onset is not one a row in between mends).
+    #[test]
+    fn failing_cells_are_those_the_tables_would_answer() {
+        let xs = [-2.0, -1.0, -0.5, -0.02];
+        // the last cell ends 0.01 from x_s = -0.01: inside the margin
+        assert!(!fails(&row(&xs, -0.01, &[true, true, false], &[])));
+        assert!(fails(&row(&xs, -0.01, &[true, false, true], &[])));
+        // the cells fail on the double-collision side only: the bouncing cells hold
+        assert!(!fails(&row(
+            &xs,
+            -0.01,
+            &[false, false, true],
+            &[true, true, true]
+        )));
+        assert!(fails(&row(
+            &xs,
+            -0.01,
+            &[true, true, true],
+            &[false, true, true]
+        )));
+    }
+}
