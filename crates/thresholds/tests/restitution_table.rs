@@ -8,8 +8,8 @@
 
 use thresholds::restitution::collision;
 use thresholds::{
-    sticking_thresholds, Collider, CrackLaw, RestitutionTables, SearchOptions, SolverOptions,
-    ThresholdMethod,
+    sticking_thresholds, Collider, Contact, CrackLaw, Geometry, Material, RestitutionTables,
+    SearchOptions, SolverOptions, ThresholdMethod,
 };
 
 #[path = "../examples/common/domain.rs"]
@@ -17,6 +17,34 @@ use thresholds::{
 mod domain;
 
 use domain::Rng;
+
+/// Whether the tables answer the collision of `contact` at `t_vis` (s) and `v_in` (m/s); where
+/// they do, asserts the ODE's outcome and e within 1e-4 of it (`what` names the case).
+fn table_agrees_with_the_ode(
+    contact: &Contact,
+    law: &CrackLaw,
+    t_vis: f64,
+    v_in: f64,
+    what: &str,
+) -> bool {
+    let solver = SolverOptions::default();
+    let (r, by) = collision(contact, law, t_vis, v_in, &solver, ThresholdMethod::Table).unwrap();
+    if by != ThresholdMethod::Table {
+        return false;
+    }
+    let ode = Collider::new(*contact, law, t_vis)
+        .unwrap()
+        .collide(v_in)
+        .unwrap();
+    assert_eq!(r.outcome, ode.outcome, "{what}");
+    assert!(
+        (r.e - ode.e).abs() <= 1e-4,
+        "{what}: e = {} against {}",
+        r.e,
+        ode.e
+    );
+    true
+}
 
 /// 400 random collisions with bouncing below the search limit: where the tables answer, the
 /// outcome is the ODE's and e is within 1e-4 of it; they answer at least half of them.
@@ -43,35 +71,13 @@ fn random_collisions_agree_with_the_ode() {
         };
         tried += 1;
         let v_in = domain::impact_speed(&mut rng, vs, von, opts.v_max_for(p.contact.v_stick_jkr()));
-        let solver = SolverOptions::default();
-        let (r, by) = collision(
-            &p.contact,
-            &law,
-            p.t_vis,
-            v_in,
-            &solver,
-            ThresholdMethod::Table,
-        )
-        .unwrap();
-        if by != ThresholdMethod::Table {
-            continue;
-        }
-        answered += 1;
-        let ode = Collider::new(p.contact, &law, p.t_vis)
-            .unwrap()
-            .collide(v_in)
-            .unwrap();
         let what = format!(
             "{:?} {:?} k = {k}, T_vis = {} s, V_in = {v_in} m/s (V_stick {vs})",
             p.material, p.geometry, p.t_vis
         );
-        assert_eq!(r.outcome, ode.outcome, "{what}");
-        assert!(
-            (r.e - ode.e).abs() <= 1e-4,
-            "{what}: e = {} against {}",
-            r.e,
-            ode.e
-        );
+        answered += usize::from(table_agrees_with_the_ode(
+            &p.contact, &law, p.t_vis, v_in, &what,
+        ));
     }
     assert!(
         answered * 2 >= tried,
@@ -99,7 +105,6 @@ fn the_embedded_arrays_are_borrowed_in_place() {
 /// of k = 0.01 was refined in y: `restitution::refine`, `docs/performance.md`).
 #[test]
 fn laboratory_grains_are_answered_by_the_tables() {
-    use thresholds::{Contact, Geometry, Material};
     let law = CrackLaw::new(0.01).unwrap();
     let mut rng = Rng(77);
     let (mut tried, mut answered) = (0, 0);
@@ -111,25 +116,10 @@ fn laboratory_grains_are_answered_by_the_tables() {
         let Some(vs) = th.v_stick else { continue };
         tried += 1;
         let v_in = vs * rng.log_uniform(1.0023, 30.0);
-        let solver = SolverOptions::default();
-        let (r, by) =
-            collision(&contact, &law, t_vis, v_in, &solver, ThresholdMethod::Table).unwrap();
-        if by != ThresholdMethod::Table {
-            continue;
-        }
-        answered += 1;
-        let ode = Collider::new(contact, &law, t_vis)
-            .unwrap()
-            .collide(v_in)
-            .unwrap();
         let what = format!("R1 = {r1} m, T_vis = {t_vis} s, V_in = {v_in} m/s (V_stick {vs})");
-        assert_eq!(r.outcome, ode.outcome, "{what}");
-        assert!(
-            (r.e - ode.e).abs() <= 1e-4,
-            "{what}: e = {} against {}",
-            r.e,
-            ode.e
-        );
+        answered += usize::from(table_agrees_with_the_ode(
+            &contact, &law, t_vis, v_in, &what,
+        ));
     }
     assert!(
         answered * 100 >= tried * 95,
