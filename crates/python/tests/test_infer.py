@@ -240,6 +240,30 @@ def test_the_stuck_probability_is_the_weight_of_the_faster_thresholds(rows, radi
     assert np.all(p[:, 0] == 1.0) and np.all(p[:, 1] == 0.0)
 
 
+@pytest.mark.parametrize("rows, radii, speeds", [(16, 64, 300), (3, 1, 5), (5, 7, 2)])
+def test_the_outcomes_likelihood_is_its_definition(rows, radii, speeds):
+    # ln L = sum over stuck collisions of ln P(stuck | v) + over bounced ones of ln(1 - P), P by
+    # brute force from its definition; a certain outcome contradicted gives -inf
+    from stickiness._likelihood import Outcomes
+
+    rng = np.random.default_rng(7 * rows + radii + speeds)
+    vs = 10 ** rng.uniform(-3, 0, (rows, radii))
+    v = 10 ** rng.uniform(-3, 0, speeds)
+    stuck = rng.random(speeds) < 0.5
+    # the first walker's first collision stuck faster than any of its V_stick: impossible
+    v[0], stuck[0] = 2.0 * vs[0].max(), True
+    w = rng.random(radii)
+    w /= w.sum()
+    p = np.minimum((w[None, :, None] * (v[None, None, :] < vs[:, :, None])).sum(axis=1), 1.0)
+    with np.errstate(divide="ignore"):
+        brute = np.log(p[:, stuck]).sum(axis=1) + np.log1p(-p[:, ~stuck]).sum(axis=1)
+    got = Outcomes(v, stuck, w).log_likelihood(vs)
+    finite = np.isfinite(brute)
+    np.testing.assert_array_equal(np.isfinite(got), finite)
+    assert got[0] == -np.inf
+    np.testing.assert_allclose(got[finite], brute[finite], rtol=1e-12, atol=1e-12)
+
+
 def test_the_same_seed_gives_the_same_chain():
     a = st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=100, seed=4)
     b = st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=100, seed=4)
