@@ -54,10 +54,15 @@ RUNS = {"constant": None, "q16": 0.16, "median": 0.5, "q84": 0.84}
 #: Sigma ~ r^-1 exp(-r/60 au), alpha = 1e-3, dust-to-gas 0.01, passive irradiated temperature,
 #: 100 radial cells from 1 to 1000 au, 7 mass bins a decade) except the mass grid's top, raised
 #: from 1e5 g so that nothing piles up at its end: H2O aggregates that do not fragment grow
-#: through St = 1 just outside the H2O snow line and reach 100 m within 1e4 yr. Measured with
-#: 50 radial cells: with 1e12 g (50 m) 4.6e-3 of the dust sat in the grid's top decade at 1e4 yr;
-#: with 1e15 g (500 m) 2.5e-15.
-MMAX = 1e15  # g
+#: through St = 1 just outside the H2O snow line, sweep up the pebbles drifting in and reach
+#: 100 m within 1e4 yr. Measured with 50 radial cells: with 1e12 g (50 m) 4.6e-3 of the dust
+#: sat in the grid's top decade at 1e4 yr; with 1e15 g (500 m) 2.5e-15 at 1e4 yr, but the
+#: boulders at 2.5 au reached 1e15 g at 2.2e4 yr and 46 % of that cell's dust sat in the last
+#: bin at 7e4 yr. Their mean radius grows by about 10 m every 1000 yr (107 m at 2e4 yr, 132 m
+#: at 2.25e4 yr), so about 1 km (5e15 g) at 1e5 yr, with a tail two decades above the mean:
+#: 1e20 g (24 km) leaves the tail three decades of room. Each decade costs 7 bins, and a step
+#: costs ~ bins^3 (DustPy's sparse LU): 1e20 g is 1.66 times 1e15 g.
+MMAX = 1e20  # g
 
 
 def posteriors(steps: int, seed: int) -> dict:
@@ -150,6 +155,8 @@ def run(name: str, quantile, v_frags: dict, args) -> dict:
         "a": sim.dust.a,  # cm, (r, m)
         "sigma": data.dust.sigma[0],  # g/cm^2 per unit ln m, (r, m)
         "Sigma_dust": sim.dust.Sigma,  # g/cm^2 per bin, (r, m)
+        # DustPy's floor: less than one body of the bin's mass in the annulus
+        "Sigma_floor": sim.dust.SigmaFloor,  # g/cm^2 per bin, (r, m)
         "St": data.dust.St[0],
         "St_drift": data.dust.St_limits.drift[0],
         "St_frag": data.dust.St_limits.frag[0],
@@ -160,7 +167,8 @@ def run(name: str, quantile, v_frags: dict, args) -> dict:
     # plain arrays (DustPy's fields carry their updaters, which do not pickle)
     state = {k: np.array(v, dtype=float) for k, v in state.items()}
     state.update(name=name, years=float(sim.t) / c.year,
-                 seconds=spent + time.perf_counter() - start)
+                 seconds=spent + time.perf_counter() - start,
+                 grid_extended_at=grid_extended.get(name, -1.0))
     return state
 
 
@@ -170,25 +178,52 @@ def save_checkpoint(sim, path: Path, settings: dict, seconds: float) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     partial = path.with_suffix(".partial.npz")
     np.savez(partial, t=float(sim.t), Sigma_dust=np.array(sim.dust.Sigma),
-             Sigma_gas=np.array(sim.gas.Sigma), seconds=seconds, **settings)
+             Sigma_gas=np.array(sim.gas.Sigma), seconds=seconds,
+             grid_extended_at=grid_extended.get(path.stem, -1.0), **settings)
     partial.replace(path)
 
 
 def resume(sim, path: Path, settings: dict) -> float:
     """Puts a run's checkpoint into ``sim`` (initialised with the same settings); returns the
-    wall time (s) spent on it so far, 0 without a checkpoint."""
+    wall time (s) spent on it so far, 0 without a checkpoint.
+
+    A checkpoint made on a lower mass grid of the same spacing (the same bins, fewer at the top)
+    is carried onto ``sim``'s wider grid, the new bins at DustPy's floor: a run whose largest
+    bodies approach the grid's end goes on from a checkpoint taken before they reached it (see
+    GRID_EXTENDED_AT)."""
     if not path.exists():
         return 0.0
     saved = np.load(path)
     for key, value in settings.items():
+        if key == "mmax" and float(saved[key]) <= value:
+            continue
         if not np.isclose(float(saved[key]), float(value), rtol=1e-12):
             raise SystemExit(f"{path}: made with {key} = {float(saved[key]):g}, not {value:g}; "
                              "give the same settings or another --checkpoints directory")
+    sigma = np.array(sim.dust.SigmaFloor, dtype=float)
+    old = saved["Sigma_dust"]
+    mass = np.array(sim.grid.m)
+    low = np.logspace(np.log10(mass[0]), np.log10(float(saved["mmax"])), old.shape[1])
+    if old.shape[1] > mass.size or not np.allclose(mass[:old.shape[1]], low, rtol=1e-9):
+        raise SystemExit(f"{path}: its mass grid (to {float(saved['mmax']):g} g) is not the "
+                         f"bottom of this one (to {mass[-1]:g} g)")
+    sigma[:, :old.shape[1]] = old
     sim.t[...] = float(saved["t"])
-    sim.dust.Sigma[...] = saved["Sigma_dust"]
+    sim.dust.Sigma[...] = sigma
     sim.gas.Sigma[...] = saved["Sigma_gas"]
     sim.update()
+    grid_extended[path.stem] = (float(saved["grid_extended_at"]) if "grid_extended_at" in saved
+                                else -1.0)
+    if old.shape[1] < mass.size and grid_extended[path.stem] < 0:
+        grid_extended[path.stem] = float(saved["t"]) / YEAR
     return float(saved["seconds"])
+
+
+#: Per run, the time (yr) its checkpoint was carried onto a wider mass grid (-1: never); saved
+#: with every later checkpoint, so that the record survives the sittings.
+grid_extended: dict = {}
+#: A year in s (DustPy's constant; repeated so that resume needs no DustPy import).
+YEAR = 3.15576e7
 
 
 #: Checkpoint spacing (yr) after the first 5e3 years: what a kill (the end of a sitting) can cost a
@@ -332,7 +367,12 @@ def report(states: dict) -> None:
                         f"{p['St'][:-1][where].min():.2g}-{p['St'][:-1][where].max():.2g}")
         mass = (s["Sigma_dust"].sum(axis=1)[:-1] * dust).sum()
         gas = (s["Sigma_gas"][:-1] * dust).sum()
-        top = s["Sigma_dust"][:, s["m"] > s["m"][-1] / 10].sum() / s["Sigma_dust"].sum()
+        # bodies, not floor values (less than one body in the annulus), in the grid's top decade
+        above = np.clip(s["Sigma_dust"] - s.get("Sigma_floor", 0.0), 0.0, None)
+        top = above[:, s["m"] > s["m"][-1] / 10].sum() / above.sum()
+        extended = s.get("grid_extended_at", -1.0)
+        if extended >= 0:
+            print(f"{name}: mass grid widened to {s['m'][-1]:.0e} g at {extended:.3g} yr")
         print(f"{name} ({s['years']:.3g} yr, {s['seconds']:.0f} s): snow lines H2O "
               f"{lines['H2O']:.2f} au, CO2 {lines['CO2']:.2f} au; dust/gas in the disc "
               f"{mass / gas:.2e}; mass in the top decade of the grid {top:.1e}")

@@ -129,6 +129,18 @@ def test_case_study_runs(tmp_path, root):
     other = subprocess.run(script + ["--years", "30", "--resume"] + tiny + ["--nr", "13"],
                            capture_output=True, text=True, cwd=tmp_path, timeout=900)
     assert other.returncode != 0 and "made with nr = 12" in other.stderr
+    # ... but goes on onto a wider mass grid of the same spacing (7 bins a decade: 1e4 g is 7
+    # bins more than 1e3 g), the dust it had kept bin for bin and the new bins at DustPy's
+    # floor (less than one body in the annulus), saying since when
+    before = np.load(tmp_path / "runs" / "median.npz")["Sigma_dust"]
+    wider = subprocess.run(script + ["--years", "30", "--resume"] + tiny + ["--mmax", "1e4"],
+                           capture_output=True, text=True, cwd=tmp_path, timeout=900)
+    assert wider.returncode == 0, wider.stderr
+    assert "median: mass grid widened to 1e+04 g at 20 yr" in wider.stdout
+    after = np.load(tmp_path / "runs" / "median.npz")
+    assert after["Sigma_dust"].shape == (before.shape[0], before.shape[1] + 7)
+    assert float(after["grid_extended_at"]) == pytest.approx(20)
+    assert float(after["t"]) / year == pytest.approx(30)
     for figure in ("dustpy_case_study.png", "dustpy_case_study_profiles.png"):
         assert (tmp_path / figure).stat().st_size > 10_000
     # the constant run has V_frag = 10 m/s everywhere; the physics runs the refractory value
