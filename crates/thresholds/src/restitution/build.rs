@@ -15,7 +15,7 @@
 //! (130-170 nodes a row) while its cells, rows 0.5 apart, vouched for 10-75 % only: the rows
 //! went to 0.25 apart, the channels to even steps in ln sigma + sigma and logit nu.
 
-use super::format::{channel_at, channel_coordinate, NodeData, RowData, TableData};
+use super::format::{channel_at, channel_coordinate, CellFlags, NodeData, RowData, TableData};
 use super::MIN_WINDOW;
 use crate::master::build::{grid_k, synthetic};
 use crate::master::format::EndsData;
@@ -318,14 +318,12 @@ pub(super) fn build_row(
         .map(|&x| node(cfg, law, masters, x, y))
         .collect();
     let nodes = refine_row(cfg, law, masters, y, x_s, nodes);
-    let cells = vec![false; nodes.len().saturating_sub(1)];
+    let cells = CellFlags::none(nodes.len().saturating_sub(1));
     RowData {
         y,
         x_s,
         nodes,
         cells,
-        bcells: Vec::new(),
-        kcells: Vec::new(),
     }
 }
 

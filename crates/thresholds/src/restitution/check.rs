@@ -105,13 +105,15 @@ pub(super) fn check_cells(
             table.rows[j].y,
             flags.len()
         ));
-        table.rows[j].cells = flags.iter().map(|f| f.0).collect();
-        table.rows[j].bcells = flags.iter().map(|f| f.1).collect();
+        let cells = &mut table.rows[j].cells;
+        cells.all = flags.iter().map(|f| f.0).collect();
+        cells.bouncing = flags.iter().map(|f| f.1).collect();
     }
 }
 
 /// Fills the k cells of `tables` (in increasing k): each cell of table i checked at the middle
-/// k between it and table i + 1 with the cubic in ln k.
+/// k between it and table i + 1 with the cubic in ln k, for every channel (`kcells`) and for the
+/// bouncing channels alone (`kbcells`).
 pub fn k_cells(
     cfg: &BuildConfig,
     tables: &mut [TableData],
@@ -123,28 +125,36 @@ pub fn k_cells(
         let k_mid = (tables[i].k * tables[i + 1].k).sqrt();
         let law = CrackLaw::new(k_mid)?;
         let rows = &tables[i].rows;
-        let flags: Vec<Vec<bool>> = (0..rows.len())
+        // per row, per cell: (every channel vouched, the bouncing channels vouched)
+        let flags: Vec<Vec<(bool, bool)>> = (0..rows.len())
             .into_par_iter()
             .map(|j| {
                 if j + 1 >= rows.len() {
-                    return vec![false; rows[j].nodes.len().saturating_sub(1)];
+                    return vec![(false, false); rows[j].nodes.len().saturating_sub(1)];
                 }
                 (0..rows[j].nodes.len().saturating_sub(1))
                     .map(|c| {
                         let (x, y) = centre(rows, j, c);
-                        check_point(cfg, &law, &all, masters, x, y).0
+                        check_point(cfg, &law, &all, masters, x, y)
                     })
                     .collect()
             })
             .collect();
-        let good: usize = flags.iter().map(|f| f.iter().filter(|&&b| b).count()).sum();
+        let count = |side: fn(&(bool, bool)) -> bool| -> usize {
+            flags
+                .iter()
+                .map(|f| f.iter().filter(|&b| side(b)).count())
+                .sum()
+        };
+        let (good, bouncing) = (count(|b| b.0), count(|b| b.1));
         progress(&format!(
-            "restitution k cells between k = {} and {}: {good} vouched",
+            "restitution k cells between k = {} and {}: {good} vouched, {bouncing} for bouncing",
             tables[i].k,
             tables[i + 1].k
         ));
         for (r, f) in tables[i].rows.iter_mut().zip(flags) {
-            r.kcells = f;
+            r.cells.k_all = f.iter().map(|b| b.0).collect();
+            r.cells.k_bouncing = f.iter().map(|b| b.1).collect();
         }
     }
     Ok(())

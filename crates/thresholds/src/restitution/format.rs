@@ -12,6 +12,7 @@
 //! cells,<0|1 ...>              per interval of this row's nodes: its cell to the next row vouched
 //! bcells,<0|1 ...>             the same cells vouched for bouncing alone (absent: as cells)
 //! kcells,<0|1 ...>             the same cells, for the cubic in ln k up to the next table
+//! kbcells,<0|1 ...>            the k cells vouched for bouncing alone (absent: as kcells)
 //! ```
 //! h is `ln(|V_out| / V_stick)` at every channel: V_out < 0 (bouncing) above V_stick, > 0
 //! (double collision) below it. |V_out| grows from 0 at V_stick, linearly in the distance to it
@@ -86,12 +87,89 @@ pub struct RowData {
     /// Nodes in increasing x.
     pub nodes: Vec<NodeData>,
     /// Per interval of the nodes: the cell from this row to the next vouched for.
-    pub cells: Vec<bool>,
-    /// The same cells vouched for the bouncing channels alone (empty: as `cells`): next to
-    /// the onset of double collisions the double-collision channels miss where bouncing holds.
-    pub bcells: Vec<bool>,
-    /// The same cells, vouched for the cubic in ln k up to the next table.
-    pub kcells: Vec<bool>,
+    pub cells: CellFlags,
+}
+
+/// Which cells of a row (per interval of its nodes, from the row to the next) the checks
+/// against the ODE vouched for; each is a record of the text form.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct CellFlags {
+    /// Every channel (`cells`).
+    pub all: Vec<bool>,
+    /// The bouncing channels alone (`bcells`; empty: as `all`): next to the onset of double
+    /// collisions the double-collision channels miss where bouncing holds.
+    pub bouncing: Vec<bool>,
+    /// Every channel, for the cubic in ln k up to the next table (`kcells`; empty: not built).
+    pub k_all: Vec<bool>,
+    /// The bouncing channels alone, for the cubic in ln k (`kbcells`; empty: as `k_all`).
+    pub k_bouncing: Vec<bool>,
+}
+
+impl CellFlags {
+    /// The records' names, in the order of the text and binary forms.
+    pub const RECORDS: [&'static str; 4] = ["cells", "bcells", "kcells", "kbcells"];
+
+    /// No cell vouched for, among `cells` cells.
+    pub fn none(cells: usize) -> Self {
+        Self {
+            all: vec![false; cells],
+            ..Self::default()
+        }
+    }
+
+    /// The records' names with their flags, in the order of the text and binary forms.
+    pub fn records(&self) -> [(&'static str, &Vec<bool>); 4] {
+        let [a, b, c, d] = Self::RECORDS;
+        [
+            (a, &self.all),
+            (b, &self.bouncing),
+            (c, &self.k_all),
+            (d, &self.k_bouncing),
+        ]
+    }
+
+    /// The flags of record `name`.
+    fn record_mut(&mut self, name: &str) -> Option<&mut Vec<bool>> {
+        match name {
+            "cells" => Some(&mut self.all),
+            "bcells" => Some(&mut self.bouncing),
+            "kcells" => Some(&mut self.k_all),
+            "kbcells" => Some(&mut self.k_bouncing),
+            _ => None,
+        }
+    }
+
+    /// The cells of one side (bouncing, or a double collision, which needs every channel) and
+    /// the k cells of it, the bouncing ones falling back on those of every channel.
+    pub fn side(&self, bouncing: bool) -> (&[bool], &[bool]) {
+        fn or<'a>(own: &'a [bool], all: &'a [bool]) -> &'a [bool] {
+            if own.is_empty() {
+                all
+            } else {
+                own
+            }
+        }
+        if bouncing {
+            (
+                or(&self.bouncing, &self.all),
+                or(&self.k_bouncing, &self.k_all),
+            )
+        } else {
+            (&self.all, &self.k_all)
+        }
+    }
+
+    /// Each side's flags resolved ([`Self::side`]) and in reverse order.
+    fn reversed(&self) -> Self {
+        let rev = |v: &[bool]| v.iter().rev().copied().collect::<Vec<bool>>();
+        let ((bouncing, k_bouncing), (all, k_all)) = (self.side(true), self.side(false));
+        Self {
+            all: rev(all),
+            bouncing: rev(bouncing),
+            k_all: rev(k_all),
+            k_bouncing: rev(k_bouncing),
+        }
+    }
 }
 
 /// The restitution table of one k.
@@ -185,9 +263,7 @@ pub fn parse(text: &str) -> Result<TableData, FormatError> {
                     y: v[0],
                     x_s: v[1],
                     nodes: Vec::new(),
-                    cells: Vec::new(),
-                    bcells: Vec::new(),
-                    kcells: Vec::new(),
+                    cells: CellFlags::default(),
                 });
             }
             "rnode" => {
@@ -210,16 +286,14 @@ pub fn parse(text: &str) -> Result<TableData, FormatError> {
                     h: v[3..].to_vec(),
                 });
             }
-            "cells" | "bcells" | "kcells" => {
+            name if CellFlags::RECORDS.contains(&name) => {
                 let b = bits(n, fields.get(1))?;
                 let row = t
                     .rows
                     .last_mut()
                     .ok_or_else(|| bad("cells before any row"))?;
-                match fields[0] {
-                    "cells" => row.cells = b,
-                    "bcells" => row.bcells = b,
-                    _ => row.kcells = b,
+                if let Some(flags) = row.cells.record_mut(name) {
+                    *flags = b;
                 }
             }
             other => return Err(bad(&format!("unknown record '{other}'"))),
@@ -227,9 +301,10 @@ pub fn parse(text: &str) -> Result<TableData, FormatError> {
     }
     let cells_fit = t.rows.iter().all(|r| {
         let m = r.nodes.len().saturating_sub(1);
-        r.cells.len() == m
-            && (r.bcells.is_empty() || r.bcells.len() == m)
-            && (r.kcells.is_empty() || r.kcells.len() == m)
+        r.cells.all.len() == m
+            && r.cells.records()[1..]
+                .iter()
+                .all(|(_, f)| f.is_empty() || f.len() == m)
     });
     if !(t.k > 0.0 && t.k < 1.0 && !t.sigma.is_empty() && t.nu.len() >= 2 && cells_fit) {
         return Err(FormatError {
@@ -252,12 +327,9 @@ pub struct Row {
     pub u: Floats,
     /// h of node i at channel c: `h[i * channels + c]`.
     pub h: Floats,
-    /// Cell flags in the same (decreasing x) order of intervals.
-    pub cells: Vec<bool>,
-    /// Cell flags of the bouncing channels alone, likewise (`cells` where the text had none).
-    pub bcells: Vec<bool>,
-    /// k-cell flags likewise (empty: none).
-    pub kcells: Vec<bool>,
+    /// Cell flags in the same (decreasing x) order of intervals, each side's resolved (the
+    /// bouncing ones filled from every channel's where the text had none).
+    pub cells: CellFlags,
 }
 
 /// A table ready to interpolate.
@@ -281,31 +353,22 @@ impl Table {
         let rows = t
             .rows
             .iter()
-            .map(|r| {
-                let rev = |v: &[bool]| v.iter().rev().copied().collect::<Vec<bool>>();
-                Row {
-                    y: r.y,
-                    x_s: r.x_s,
-                    u: r.nodes
-                        .iter()
-                        .rev()
-                        .map(|p| (r.x_s - p.x).ln())
-                        .collect::<Vec<_>>()
-                        .into(),
-                    h: r.nodes
-                        .iter()
-                        .rev()
-                        .flat_map(|p| p.h.iter().copied())
-                        .collect::<Vec<_>>()
-                        .into(),
-                    cells: rev(&r.cells),
-                    bcells: rev(if r.bcells.is_empty() {
-                        &r.cells
-                    } else {
-                        &r.bcells
-                    }),
-                    kcells: rev(&r.kcells),
-                }
+            .map(|r| Row {
+                y: r.y,
+                x_s: r.x_s,
+                u: r.nodes
+                    .iter()
+                    .rev()
+                    .map(|p| (r.x_s - p.x).ln())
+                    .collect::<Vec<_>>()
+                    .into(),
+                h: r.nodes
+                    .iter()
+                    .rev()
+                    .flat_map(|p| p.h.iter().copied())
+                    .collect::<Vec<_>>()
+                    .into(),
+                cells: r.cells.reversed(),
             })
             .collect::<Vec<_>>();
         Table {
@@ -323,7 +386,7 @@ impl Table {
 }
 
 /// The binary form's first bytes.
-const MAGIC: &[u8; 8] = b"STKRT002";
+const MAGIC: &[u8; 8] = b"STKRT003";
 
 /// The binary form of `tables` ([`crate::bytes`]; they share nothing).
 pub fn to_bytes(tables: &[TableData]) -> Vec<u8> {
@@ -340,9 +403,9 @@ pub fn to_bytes(tables: &[TableData]) -> Vec<u8> {
                 w.f(r.x_s);
                 w.fs(&r.u);
                 w.fs(&r.h);
-                w.flags(&r.cells);
-                w.flags(&r.bcells);
-                w.flags(&r.kcells);
+                for (_, flags) in r.cells.records() {
+                    w.flags(flags);
+                }
             });
             (t.k, w.0)
         })
@@ -362,15 +425,18 @@ pub fn table_from_bytes(bytes: &'static [u8], i: usize) -> Option<Table> {
     let rows = r.list(|r| {
         let (y, x_s) = (r.f()?, r.f()?);
         let (u, h) = (r.fs_borrowed()?, r.fs_borrowed()?);
-        let (cells, bcells, kcells) = (r.flags()?, r.flags()?, r.flags()?);
+        let cells = CellFlags {
+            all: r.flags()?,
+            bouncing: r.flags()?,
+            k_all: r.flags()?,
+            k_bouncing: r.flags()?,
+        };
         Some(Row {
             y,
             x_s,
             u,
             h,
             cells,
-            bcells,
-            kcells,
         })
     })?;
     // the binary form holds the channels' coordinates already (`to_bytes` writes a `Table`)
@@ -386,6 +452,48 @@ pub fn table_from_bytes(bytes: &'static [u8], i: usize) -> Option<Table> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A table with three nodes a row and each cell record once, as the module doc defines
+    /// them: the first row has no `bcells` (bouncing falls back on `cells`), the second no
+    /// `kbcells` (falls back on `kcells`).
+    const TEXT: &str = "k,0.01\nsigma,0.5\nnu,0.3,0.6\n\
+        row,-1,0.5\nrnode,0.1,2,1.5,0.1,0.2,0.3\nrnode,0.2,2,1.5,0.1,0.2,0.3\n\
+        rnode,0.3,2,1.5,0.1,0.2,0.3\ncells,01\nkcells,10\nkbcells,11\n\
+        row,-0.5,0.5\nrnode,0.1,2,1.5,0.1,0.2,0.3\nrnode,0.2,2,1.5,0.1,0.2,0.3\n\
+        rnode,0.3,2,1.5,0.1,0.2,0.3\ncells,00\nbcells,01\nkcells,01\n";
+
+    /// Each side reads its own flags or falls back; the interpolation form holds them reversed
+    /// (nodes in decreasing x) and resolved; text and binary forms give the table back.
+    #[test]
+    fn cell_flags_fall_back_and_survive_both_forms() {
+        let (t, f) = (parse(TEXT).expect("the table reads"), false);
+        let (first, second) = (&t.rows[0].cells, &t.rows[1].cells);
+        assert_eq!(first.side(true), (&[f, true][..], &[true, true][..]));
+        assert_eq!(first.side(false), (&[f, true][..], &[true, f][..]));
+        assert_eq!(second.side(true), (&[f, true][..], &[f, true][..]));
+        assert_eq!(second.side(false), (&[f, f][..], &[f, true][..]));
+        let table = Table::from_data(&t);
+        assert_eq!(table.rows[0].cells.bouncing, [true, f]);
+        assert_eq!(table.rows[1].cells.k_bouncing, [true, f]);
+        // the text leaves out what falls back to an equal record, and reads back the same
+        let text = crate::restitution::to_text(&t);
+        assert_eq!(text.matches("kbcells").count(), 1);
+        assert_eq!(parse(&text).expect("written text reads"), t);
+        let bytes: &'static [u8] = Box::leak(to_bytes(&[t]).into_boxed_slice());
+        assert_eq!(table_from_bytes(bytes, 0), Some(table));
+    }
+
+    /// Bad cell records are named.
+    #[test]
+    fn bad_cell_records_are_refused() {
+        let before = "k,0.01\nsigma,0.5\nnu,0.3,0.6\ncells,01\n";
+        assert_eq!(parse(before).unwrap_err().problem, "cells before any row");
+        let unknown = TEXT.replace("kbcells", "xcells");
+        assert_eq!(
+            parse(&unknown).unwrap_err().problem,
+            "unknown record 'xcells'"
+        );
+    }
 
     /// `channel_at` inverts `channel_coordinate` on both sides, from next to V_stick to far
     /// above it (ln q + q = z has one root for every z).

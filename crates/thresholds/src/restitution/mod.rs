@@ -171,7 +171,7 @@ impl RestitutionTables {
         self.k.len() >= 4
             && (0..self.k.len() - 1).all(|i| {
                 self.table(i)
-                    .is_some_and(|t| t.rows.iter().any(|r| !r.kcells.is_empty()))
+                    .is_some_and(|t| t.rows.iter().any(|r| !r.cells.k_all.is_empty()))
             })
     }
 
@@ -377,12 +377,9 @@ fn table_h(
         }
         let i = interval(&r.u, u);
         // bouncing needs its own channels vouched; a double collision every channel
-        let cells = match side {
-            Side::Bouncing => &r.bcells,
-            Side::Double => &r.cells,
-        };
+        let (cells, kcells) = r.cells.side(side == Side::Bouncing);
         if !cells.get(i).copied().unwrap_or(false)
-            || (k_checked && !r.kcells.get(i).copied().unwrap_or(false))
+            || (k_checked && !kcells.get(i).copied().unwrap_or(false))
         {
             return None;
         }
@@ -446,12 +443,17 @@ pub fn to_text(t: &format::TableData) -> String {
                 h.join(",")
             );
         }
-        let _ = writeln!(out, "cells,{}", flags(&r.cells));
-        if !r.bcells.is_empty() && r.bcells != r.cells {
-            let _ = writeln!(out, "bcells,{}", flags(&r.bcells));
-        }
-        if !r.kcells.is_empty() {
-            let _ = writeln!(out, "kcells,{}", flags(&r.kcells));
+        // a record that is empty, or equal to the one it falls back on, is left out
+        let [all, bouncing, k_all, k_bouncing] = r.cells.records();
+        let _ = writeln!(out, "{},{}", all.0, flags(all.1));
+        for ((name, own), fallback) in [
+            (bouncing, all.1),
+            (k_all, &Vec::new()),
+            (k_bouncing, k_all.1),
+        ] {
+            if !own.is_empty() && own != fallback {
+                let _ = writeln!(out, "{name},{}", flags(own));
+            }
         }
     }
     out

@@ -33,12 +33,9 @@ pub const MIN_Y_STEP: f64 = 1.0 / 64.0;
 /// the onset (nu = 0.99-0.998) miss by 6e-5 to 2e-3 with rows 1/16 apart as with rows 1/4
 /// apart: a finer row spacing does not help them.
 fn fails(r: &RowData) -> bool {
-    let cells = if r.bcells.is_empty() {
-        &r.cells
-    } else {
-        &r.bcells
-    };
-    cells
+    r.cells
+        .side(true)
+        .0
         .iter()
         .zip(r.nodes.windows(2))
         .any(|(&ok, pair)| !ok && r.x_s - pair[1].x >= CLIFF_MARGIN)
@@ -104,7 +101,8 @@ pub fn refine_table(
     }
     if added > 0 {
         for r in &mut table.rows {
-            r.kcells.clear();
+            r.cells.k_all.clear();
+            r.cells.k_bouncing.clear();
         }
         table.header.push(format!(
             "refined: {added} rows added halfway between rows whose cells failed, y within {} .. {} (the cubic across rows; restitution::refine)",
@@ -131,7 +129,7 @@ pub fn recheck_table(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::restitution::format::NodeData;
+    use crate::restitution::format::{CellFlags, NodeData};
 
     fn row(xs: &[f64], x_s: f64, cells: &[bool], bcells: &[bool]) -> RowData {
         RowData {
@@ -146,9 +144,11 @@ mod tests {
                     h: Vec::new(),
                 })
                 .collect(),
-            cells: cells.to_vec(),
-            bcells: bcells.to_vec(),
-            kcells: Vec::new(),
+            cells: CellFlags {
+                all: cells.to_vec(),
+                bouncing: bcells.to_vec(),
+                ..CellFlags::default()
+            },
         }
     }
 
