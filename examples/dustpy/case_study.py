@@ -163,6 +163,8 @@ def run(name: str, quantile, v_frags: dict, args) -> dict:
         "Sigma_gas": data.gas.Sigma[0],  # g/cm^2
         "T": sim.gas.T,  # K
         "v_frag": data.dust.v.frag[0] / sd.CM_PER_M,  # m/s
+        "v_rel_max": fastest_collision(sim.dust.Sigma, sim.gas.Sigma,
+                                       sim.dust.v.rel.tot) / sd.CM_PER_M,  # m/s
     }
     # plain arrays (DustPy's fields carry their updaters, which do not pickle)
     state = {k: np.array(v, dtype=float) for k, v in state.items()}
@@ -242,6 +244,25 @@ def milestones(years: float) -> list:
     return sorted({m for m in marks if m < years}) + [years]
 
 
+#: A bin is populated when it holds at least this share of its cell's dust. DustPy defines a
+#: relative velocity between every two bins, empty ones included (a 1e20 g body against a
+#: micron grain), so the fastest collisions that carry a cell's evolution are those between
+#: populated bins; V_frag is to be compared with them.
+POPULATED = 1e-4
+
+
+def fastest_collision(sigma, sigma_gas, v_rel) -> np.ndarray:
+    """Per radial cell, the largest relative velocity (units of ``v_rel``) between two
+    populated bins (POPULATED); NaN in the cells emptied by drift (EMPTY_D2G). ``sigma`` (r, m)
+    and ``sigma_gas`` (r) in the same units, ``v_rel`` (r, m, m)."""
+    sigma = np.asarray(sigma, dtype=float)
+    dust = sigma.sum(axis=1)
+    populated = sigma / dust[:, None] >= POPULATED
+    both = populated[:, :, None] & populated[:, None, :]
+    fastest = np.where(both, np.asarray(v_rel, dtype=float), 0.0).max(axis=(1, 2))
+    return np.where(dust / np.asarray(sigma_gas, dtype=float) >= EMPTY_D2G, fastest, np.nan)
+
+
 #: Below this dust-to-gas ratio a cell holds only DustPy's floor values (the outer disc, emptied
 #: by drift): its "size carrying most mass" means nothing and is not drawn or reported.
 EMPTY_D2G = 1e-5
@@ -314,7 +335,7 @@ def draw(states: dict, out_dir: Path, years: float) -> list:
     plt.close(fig)
 
     fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
-    panels = (("v_frag", "V_frag (m/s)"), ("a", "size carrying most mass (m)"),
+    panels = (("v_frag", "V_frag, collision speeds (m/s)"), ("a", "size carrying most mass (m)"),
               ("St", "its Stokes number"), ("d2g", "dust-to-gas ratio"))
     for ax, (key, label) in zip(axes.flat, panels):
         series = {n: (states[n]["v_frag"] if key == "v_frag" else peak(states[n])[key])
@@ -329,6 +350,13 @@ def draw(states: dict, out_dir: Path, years: float) -> list:
                             label="grain physics, 16-84 % posterior")
         if "median" in series:
             ax.plot(r, series["median"][:-1], color="C3", label=titles["median"])
+        if key == "v_frag":
+            # what V_frag is compared with: where the fastest collision stays below it,
+            # nothing fragments
+            for n, colour in (("constant", "0.4"), ("median", "C3")):
+                if n in states and "v_rel_max" in states[n]:
+                    ax.plot(r, states[n]["v_rel_max"][:-1], color=colour, ls="--", lw=1,
+                            label=f"fastest collision between populated bins ({n})")
         for line, r_line in snow_lines(states[names[0]]).items():
             ax.axvline(r_line, color="0.6", ls=":", lw=1)
         ax.set(xscale="log", yscale="log", ylabel=label)
@@ -362,7 +390,9 @@ def report(states: dict) -> None:
             if not where.any():
                 continue
             vf = s["v_frag"][:-1][where]
-            text.append(f"{zone}: V_frag {vf.min():.3g}-{vf.max():.3g} m/s, a_peak "
+            fastest = (f", fastest collision between populated bins "
+                       f"{s['v_rel_max'][:-1][where].max():.3g} m/s" if "v_rel_max" in s else "")
+            text.append(f"{zone}: V_frag {vf.min():.3g}-{vf.max():.3g} m/s{fastest}, a_peak "
                         f"{p['a'][:-1][where].min():.2g}-{p['a'][:-1][where].max():.2g} m, St "
                         f"{p['St'][:-1][where].min():.2g}-{p['St'][:-1][where].max():.2g}")
         mass = (s["Sigma_dust"].sum(axis=1)[:-1] * dust).sum()

@@ -114,6 +114,7 @@ def test_case_study_runs(tmp_path, root):
     done = subprocess.run(script + ["--years", "10"] + tiny, capture_output=True, text=True,
                           cwd=tmp_path, timeout=900)
     assert done.returncode == 0, done.stderr
+    assert "fastest collision between populated bins" in done.stdout
     # a run goes on from its checkpoint (10 yr) instead of starting again
     more = subprocess.run(script + ["--years", "20", "--resume"] + tiny, capture_output=True,
                           text=True, cwd=tmp_path, timeout=900)
@@ -159,6 +160,21 @@ def test_case_study_runs(tmp_path, root):
         capture_output=True, text=True, cwd=tmp_path, timeout=300,
     )
     assert replot.returncode == 0, replot.stderr
+
+
+def test_fastest_collision_counts_populated_bins_only(root):
+    # truth by hand: two populated bins (shares 0.5) and an empty one (1e-6 of the dust) whose
+    # collisions are faster; a cell emptied by drift (dust/gas 1e-7) has none
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location(
+        "case_study", root / "examples" / "dustpy" / "case_study.py")
+    case_study = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(case_study)
+    sigma = np.array([[1.0, 1e-6, 1.0], [1e-7, 1e-7, 1e-7]])
+    v_rel = np.array([[[0.0, 90.0, 3.0], [90.0, 0.0, 80.0], [3.0, 80.0, 2.0]]] * 2)
+    fastest = case_study.fastest_collision(sigma, np.array([100.0, 3.0]), v_rel)
+    assert fastest[0] == 3.0 and np.isnan(fastest[1])
 
 
 def test_posteriors_bracket_the_disc():
