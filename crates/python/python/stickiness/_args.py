@@ -126,6 +126,8 @@ def scalar_option(name: str, value: Any) -> Optional[float]:
 
 def flag(name: str, value: Any) -> bool:
     """A bool; ``TypeError`` naming ``name`` for anything else."""
+    if value is False or value is True:
+        return value
     if not isinstance(value, (bool, np.bool_)):
         raise TypeError(f"{name}: expected a bool, got {type(value).__name__}")
     return bool(value)
@@ -155,6 +157,8 @@ def geometry(radius2: Any, wall: Any) -> bool:
 
 def method(value: Any) -> str:
     """``"search"`` or ``"table"``."""
+    if type(value) is str and value in METHODS:  # spelt as they are (no lower() to call)
+        return value
     if not isinstance(value, str) or value.lower() not in METHODS:
         raise ValueError(f"method = {value!r}: must be 'search' or 'table'")
     return value.lower()
@@ -212,13 +216,19 @@ class Broadcast:
     """Number arguments broadcast together and flattened for the compiled core."""
 
     def __init__(self, **args: Any) -> None:
-        if all(type(v) is float or (v is None and k in OPTIONAL) for k, v in args.items()):
+        floats: Dict[str, Any] = {}
+        for k, v in args.items():
+            if type(v) is float:
+                floats[k] = v
+            elif v is not None or k not in OPTIONAL:
+                break
+        else:
             # the common scalar call (floats only): the floats themselves, which the core
             # takes as one element each and answers with floats; nothing to check or broadcast
-            # (two thirds of a scalar call's overhead otherwise)
-            self.shapes: Dict[str, Tuple[int, ...]] = {k: () for k, v in args.items() if v is not None}
+            # (two thirds of a scalar call's overhead otherwise; a plain loop, no generator)
+            self.shapes: Dict[str, Tuple[int, ...]] = dict.fromkeys(floats, ())
             self.shape: Tuple[int, ...] = ()
-            self.flat: Dict[str, Any] = {k: v for k, v in args.items() if v is not None}
+            self.flat: Dict[str, Any] = floats
             self.scalar = True
             return
         if self._one_vector(args):
