@@ -131,16 +131,15 @@ def test_case_study_runs(tmp_path, root):
                            capture_output=True, text=True, cwd=tmp_path, timeout=900)
     assert other.returncode != 0 and "made with nr = 12" in other.stderr
     # ... but goes on onto a wider mass grid of the same spacing (7 bins a decade: 1e4 g is 7
-    # bins more than 1e3 g), the dust it had kept bin for bin and the new bins at DustPy's
-    # floor (less than one body in the annulus), saying since when
+    # bins more than 1e3 g), saying since when (test_resume_widens_the_mass_grid: the bins)
     before = np.load(tmp_path / "runs" / "median.npz")["Sigma_dust"]
     wider = subprocess.run(script + ["--years", "30", "--resume"] + tiny + ["--mmax", "1e4"],
                            capture_output=True, text=True, cwd=tmp_path, timeout=900)
     assert wider.returncode == 0, wider.stderr
-    assert "median: mass grid widened to 1e+04 g at 20 yr" in wider.stdout
+    assert "median: mass grid widened at 20 yr from 1e+03 g (now to 1e+04 g)" in wider.stdout
     after = np.load(tmp_path / "runs" / "median.npz")
     assert after["Sigma_dust"].shape == (before.shape[0], before.shape[1] + 7)
-    assert float(after["grid_extended_at"]) == pytest.approx(20)
+    assert np.allclose(after["grid_widened"], [[20.0, 1e3]])
     assert float(after["t"]) / year == pytest.approx(30)
     for figure in ("dustpy_case_study.png", "dustpy_case_study_profiles.png"):
         assert (tmp_path / figure).stat().st_size > 10_000
@@ -162,15 +161,57 @@ def test_case_study_runs(tmp_path, root):
     assert replot.returncode == 0, replot.stderr
 
 
-def test_fastest_collision_counts_populated_bins_only(root):
-    # truth by hand: two populated bins (shares 0.5) and an empty one (1e-6 of the dust) whose
-    # collisions are faster; a cell emptied by drift (dust/gas 1e-7) has none
+def _case_study(root):
     import importlib.util
 
     spec = importlib.util.spec_from_file_location(
         "case_study", root / "examples" / "dustpy" / "case_study.py")
-    case_study = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(case_study)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_resume_widens_the_mass_grid(tmp_path, root):
+    # truth by construction of the grids: DustPy's mass grid is 7 bins a decade from 1e-12 g,
+    # so a checkpoint to 1e3 g is the bottom 106 bins of a grid to 1e4 g (113 bins): they come
+    # back bin for bin, the 7 new ones at DustPy's empty-bin value (0.1 of its floor); a
+    # narrower grid or one of another spacing is refused
+    from dustpy import Simulation
+    from dustpy import constants as c
+
+    cs = _case_study(root)
+
+    def sim(mmax):
+        s = Simulation()
+        s.ini.grid.Nr, s.ini.grid.mmax = 12, mmax
+        s.initialize()
+        return s
+
+    settings = {"nr": 12, "mmax": 1e3, "v_frag_refractory": 1.0, "quantile": 0.5,
+                "steps": 60, "seed": 1}
+    small = sim(1e3)
+    small.t[...] = 7.0 * c.year
+    sigma = np.array(small.dust.Sigma) * np.linspace(1.0, 2.0, small.grid.Nm)  # not DustPy's
+    small.dust.Sigma[...] = sigma
+    path = tmp_path / "median.npz"
+    cs.save_checkpoint(small, path, settings, 5.0, cs.NOT_WIDENED)
+    wide = sim(1e4)
+    seconds, widened = cs.resume(wide, path, {**settings, "mmax": 1e4})
+    assert seconds == 5.0 and np.allclose(widened, [[7.0, 1e3]])
+    assert wide.grid.Nm == small.grid.Nm + 7
+    assert np.array_equal(np.array(wide.dust.Sigma)[:, :small.grid.Nm], sigma)
+    assert np.array_equal(np.array(wide.dust.Sigma)[:, small.grid.Nm:],
+                          0.1 * np.array(wide.dust.SigmaFloor)[:, small.grid.Nm:])
+    with pytest.raises(SystemExit, match="made with mmax = 1000"):
+        cs.resume(sim(1e2), path, {**settings, "mmax": 1e2})
+    with pytest.raises(SystemExit, match="is not the bottom"):
+        cs.resume(sim(3e3), path, {**settings, "mmax": 3e3})
+
+
+def test_fastest_collision_counts_populated_bins_only(root):
+    # truth by hand: two populated bins (shares 0.5) and an empty one (1e-6 of the dust) whose
+    # collisions are faster; a cell emptied by drift (dust/gas 1e-7) has none
+    case_study = _case_study(root)
     sigma = np.array([[1.0, 1e-6, 1.0], [1e-7, 1e-7, 1e-7]])
     v_rel = np.array([[[0.0, 90.0, 3.0], [90.0, 0.0, 80.0], [3.0, 80.0, 2.0]]] * 2)
     fastest = case_study.fastest_collision(sigma, np.array([100.0, 3.0]), v_rel)

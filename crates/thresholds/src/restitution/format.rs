@@ -86,7 +86,7 @@ pub struct RowData {
     pub x_s: f64,
     /// Nodes in increasing x.
     pub nodes: Vec<NodeData>,
-    /// Per interval of the nodes: the cell from this row to the next vouched for.
+    /// Per interval of the nodes, which cells from this row to the next are vouched for.
     pub cells: CellFlags,
 }
 
@@ -130,13 +130,16 @@ impl CellFlags {
 
     /// The flags of record `name`.
     fn record_mut(&mut self, name: &str) -> Option<&mut Vec<bool>> {
-        match name {
-            "cells" => Some(&mut self.all),
-            "bcells" => Some(&mut self.bouncing),
-            "kcells" => Some(&mut self.k_all),
-            "kbcells" => Some(&mut self.k_bouncing),
-            _ => None,
-        }
+        let [a, b, c, d] = Self::RECORDS;
+        [
+            (a, &mut self.all),
+            (b, &mut self.bouncing),
+            (c, &mut self.k_all),
+            (d, &mut self.k_bouncing),
+        ]
+        .into_iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, f)| f)
     }
 
     /// The cells of one side (bouncing, or a double collision, which needs every channel) and
@@ -450,62 +453,5 @@ pub fn table_from_bytes(bytes: &'static [u8], i: usize) -> Option<Table> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    /// A table with three nodes a row and each cell record once, as the module doc defines
-    /// them: the first row has no `bcells` (bouncing falls back on `cells`), the second no
-    /// `kbcells` (falls back on `kcells`).
-    const TEXT: &str = "k,0.01\nsigma,0.5\nnu,0.3,0.6\n\
-        row,-1,0.5\nrnode,0.1,2,1.5,0.1,0.2,0.3\nrnode,0.2,2,1.5,0.1,0.2,0.3\n\
-        rnode,0.3,2,1.5,0.1,0.2,0.3\ncells,01\nkcells,10\nkbcells,11\n\
-        row,-0.5,0.5\nrnode,0.1,2,1.5,0.1,0.2,0.3\nrnode,0.2,2,1.5,0.1,0.2,0.3\n\
-        rnode,0.3,2,1.5,0.1,0.2,0.3\ncells,00\nbcells,01\nkcells,01\n";
-
-    /// Each side reads its own flags or falls back; the interpolation form holds them reversed
-    /// (nodes in decreasing x) and resolved; text and binary forms give the table back.
-    #[test]
-    fn cell_flags_fall_back_and_survive_both_forms() {
-        let (t, f) = (parse(TEXT).expect("the table reads"), false);
-        let (first, second) = (&t.rows[0].cells, &t.rows[1].cells);
-        assert_eq!(first.side(true), (&[f, true][..], &[true, true][..]));
-        assert_eq!(first.side(false), (&[f, true][..], &[true, f][..]));
-        assert_eq!(second.side(true), (&[f, true][..], &[f, true][..]));
-        assert_eq!(second.side(false), (&[f, f][..], &[f, true][..]));
-        let table = Table::from_data(&t);
-        assert_eq!(table.rows[0].cells.bouncing, [true, f]);
-        assert_eq!(table.rows[1].cells.k_bouncing, [true, f]);
-        // the text leaves out what falls back to an equal record, and reads back the same
-        let text = crate::restitution::to_text(&t);
-        assert_eq!(text.matches("kbcells").count(), 1);
-        assert_eq!(parse(&text).expect("written text reads"), t);
-        let bytes: &'static [u8] = Box::leak(to_bytes(&[t]).into_boxed_slice());
-        assert_eq!(table_from_bytes(bytes, 0), Some(table));
-    }
-
-    /// Bad cell records are named.
-    #[test]
-    fn bad_cell_records_are_refused() {
-        let before = "k,0.01\nsigma,0.5\nnu,0.3,0.6\ncells,01\n";
-        assert_eq!(parse(before).unwrap_err().problem, "cells before any row");
-        let unknown = TEXT.replace("kbcells", "xcells");
-        assert_eq!(
-            parse(&unknown).unwrap_err().problem,
-            "unknown record 'xcells'"
-        );
-    }
-
-    /// `channel_at` inverts `channel_coordinate` on both sides, from next to V_stick to far
-    /// above it (ln q + q = z has one root for every z).
-    #[test]
-    fn the_channel_coordinate_is_inverted() {
-        for q in [1e-4, 3e-3, 0.1, 0.5, 1.0, 2.7, 9.5] {
-            let back = channel_at(true, channel_coordinate(true, q));
-            assert!((back / q - 1.0).abs() < 1e-13, "{q}: {back}");
-        }
-        for q in [1e-4, 0.01, 0.5, 0.9, 0.999] {
-            let back = channel_at(false, channel_coordinate(false, q));
-            assert!((back / q - 1.0).abs() < 1e-12, "{q}: {back}");
-        }
-    }
-}
+#[path = "format_tests.rs"]
+mod tests;
