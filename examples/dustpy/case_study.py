@@ -275,6 +275,16 @@ def fastest_collision(sigma, sigma_gas, v_rel) -> np.ndarray:
 EMPTY_D2G = 1e-5
 
 
+def largest_size(state: dict) -> float:
+    """The radius (m) of the largest bodies in a populated bin (POPULATED) of a cell that holds
+    dust (EMPTY_D2G)."""
+    sigma = state["Sigma_dust"]
+    dust = sigma.sum(axis=1)
+    holds_dust = dust / state["Sigma_gas"] >= EMPTY_D2G
+    populated = (sigma / dust[:, None] >= POPULATED) & holds_dust[:, None]
+    return float(np.max(np.where(populated, state["a"], 0.0))) * 1e-2
+
+
 def peak(state: dict) -> dict:
     """Per radius: the size carrying most mass (m), its Stokes number, the dust-to-gas ratio."""
     S = state["Sigma_dust"]
@@ -305,6 +315,9 @@ def draw(states: dict, out_dir: Path, years: float) -> list:
               "q84": "grain physics, 84 % quantile"}
     names = [n for n in RUNS if n in states]
     top = max(np.nanmax(s["sigma"]) for s in states.values())
+    # the size axis up to ten times the largest populated bodies of any run (the grid reaches
+    # far beyond them: MMAX)
+    largest = max(largest_size(s) for s in states.values())
     levels = np.arange(np.ceil(np.log10(top)) - 6, np.ceil(np.log10(top)) + 0.01, 0.5)
     fig, axes = plt.subplots(1, len(names), figsize=(4.1 * len(names), 4.0), sharey=True,
                              squeeze=False)
@@ -326,7 +339,7 @@ def draw(states: dict, out_dir: Path, years: float) -> list:
             ax.text(r_line, 1.01, line, transform=ax.get_xaxis_transform(), ha="center",
                     fontsize=8)
         ax.set(xscale="log", yscale="log", xlim=(s["r"][0], s["r"][-2]),
-               ylim=(1e-5, size.max()), xlabel="r (au)")
+               ylim=(1e-5, min(size.max(), 10 * largest)), xlabel="r (au)")
         ax.set_title(titles[name], fontsize=9, pad=14)
     axes[0][0].set_ylabel("particle radius a (m)")
     for colour, label in (("C2", "drift limit"), ("C0", "fragmentation limit"),
