@@ -247,6 +247,10 @@ def milestones(years: float) -> list:
     return sorted({m for m in marks if m < years}) + [years]
 
 
+#: Below this dust-to-gas ratio a cell holds only DustPy's floor values (the outer disc, emptied
+#: by drift): its "size carrying most mass" means nothing and is not drawn or reported.
+EMPTY_D2G = 1e-5
+
 #: A bin is populated when it holds at least this share of its cell's dust. DustPy defines a
 #: relative velocity between every two bins, empty ones included (a 1e20 g body against a
 #: micron grain), so the fastest collisions that carry a cell's evolution are those between
@@ -258,30 +262,28 @@ def milestones(years: float) -> list:
 POPULATED = 1e-4
 
 
-def fastest_collision(sigma, sigma_gas, v_rel) -> np.ndarray:
-    """Per radial cell, the largest relative velocity (units of ``v_rel``) between two
-    populated bins (POPULATED); NaN in the cells emptied by drift (EMPTY_D2G). ``sigma`` (r, m)
-    and ``sigma_gas`` (r) in the same units, ``v_rel`` (r, m, m)."""
+def populated_bins(sigma, sigma_gas) -> np.ndarray:
+    """Which bins (r, m) are populated (POPULATED) in a cell that holds dust (EMPTY_D2G);
+    ``sigma`` (r, m) and ``sigma_gas`` (r) in the same units."""
     sigma = np.asarray(sigma, dtype=float)
     dust = sigma.sum(axis=1)
-    populated = sigma / dust[:, None] >= POPULATED
+    holds_dust = dust / np.asarray(sigma_gas, dtype=float) >= EMPTY_D2G
+    return (sigma / dust[:, None] >= POPULATED) & holds_dust[:, None]
+
+
+def fastest_collision(sigma, sigma_gas, v_rel) -> np.ndarray:
+    """Per radial cell, the largest relative velocity (units of ``v_rel``) between two
+    populated bins (``populated_bins``); NaN in the cells emptied by drift. ``v_rel`` (r, m,
+    m)."""
+    populated = populated_bins(sigma, sigma_gas)
     both = populated[:, :, None] & populated[:, None, :]
     fastest = np.where(both, np.asarray(v_rel, dtype=float), 0.0).max(axis=(1, 2))
-    return np.where(dust / np.asarray(sigma_gas, dtype=float) >= EMPTY_D2G, fastest, np.nan)
-
-
-#: Below this dust-to-gas ratio a cell holds only DustPy's floor values (the outer disc, emptied
-#: by drift): its "size carrying most mass" means nothing and is not drawn or reported.
-EMPTY_D2G = 1e-5
+    return np.where(populated.any(axis=1), fastest, np.nan)
 
 
 def largest_size(state: dict) -> float:
-    """The radius (m) of the largest bodies in a populated bin (POPULATED) of a cell that holds
-    dust (EMPTY_D2G)."""
-    sigma = state["Sigma_dust"]
-    dust = sigma.sum(axis=1)
-    holds_dust = dust / state["Sigma_gas"] >= EMPTY_D2G
-    populated = (sigma / dust[:, None] >= POPULATED) & holds_dust[:, None]
+    """The radius (m) of the largest bodies in a populated bin (``populated_bins``)."""
+    populated = populated_bins(state["Sigma_dust"], state["Sigma_gas"])
     return float(np.max(np.where(populated, state["a"], 0.0))) * 1e-2
 
 
