@@ -1,4 +1,4 @@
-//! `cargo xtask master-table [--part ends|tables|kcheck|revouch] [--check]`: build the master tables of
+//! `cargo xtask master-table [--part ends|tables|kcheck|revouch|beyond] [--check]`: build the master tables of
 //! V_stick / V_stick,JKR with the exact search and write them to `crates/thresholds/data/`
 //! (`master_ends.csv`, the end curves and the checks between tables of neighbouring k;
 //! `master_k<k>.csv`, one table a k), or recompute a sample of their nodes and end points and
@@ -8,6 +8,7 @@ use crate::figures::Error;
 use numerics::format::number;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
+use thresholds::master::build::beyond::{check_beyond_table, check_levels};
 use thresholds::master::build::cells::extend_table;
 use thresholds::master::build::check::{
     check_ends, check_nodes, END_TOL, ILL_CONDITIONED_BELOW_Y, ILL_CONDITIONED_TOL, NODE_REL_TOL,
@@ -22,6 +23,10 @@ use thresholds::master::{ends_to_text, table_to_text};
 /// `--check` recomputes every this-many-th node of each table (about 120 of its 30 000 values):
 /// a change of the model moves them all, so a sample finds it, in seconds.
 pub const CHECK_EVERY: usize = 250;
+
+/// `--check` checks beyond their ends every this-many-th row that is not monotone (about 30 of
+/// 136, 12 searches each: a few seconds).
+pub const CHECK_LEVELS_EVERY: usize = 4;
 
 /// `--check` recomputes every this-many-th point of the end curves (about 40 of 33 000).
 pub const CHECK_ENDS_EVERY: usize = 800;
@@ -41,6 +46,9 @@ pub enum Part {
     Kcheck,
     /// The committed tables vouched closer to their ends (no new nodes; then `kcheck`).
     Revouch,
+    /// The committed tables' rows that are not monotone checked for no bouncing beyond their
+    /// ends up to where their ratios stop increasing (no new nodes).
+    Beyond,
 }
 
 /// The directory of the committed tables.
@@ -179,7 +187,7 @@ pub fn run_build(
             progress(&format!("wrote {}", path.display()));
         }
     }
-    if part == Part::Revouch {
+    if matches!(part, Part::Revouch | Part::Beyond) {
         let ends = committed_ends(root)?;
         for t in committed_tables(root)? {
             let i = cfg
@@ -189,7 +197,11 @@ pub fn run_build(
             if !only.is_empty() && !i.is_some_and(|i| only.contains(&i)) {
                 continue;
             }
-            let mut t = revouch_table(&cfg, &t, &ends, &progress)?;
+            let mut t = if part == Part::Revouch {
+                revouch_table(&cfg, &t, &ends, &progress)?
+            } else {
+                check_beyond_table(&cfg, &t, &progress)?
+            };
             t.header
                 .retain(|h| !h.starts_with("commit:") && !h.starts_with("command:"));
             t.header.splice(0..0, stamp.iter().cloned());
@@ -253,8 +265,16 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
             )
             .into());
         }
+        let (moved, rows) = check_levels(&BuildConfig::standard(), &t, CHECK_LEVELS_EVERY)?;
+        if let Some(y) = moved {
+            return Err(format!(
+                "the master table of k = {} is stale: beyond the ends of its row y = {y} something now bounces below the row's level; run `cargo xtask master-table --part beyond`",
+                t.k
+            )
+            .into());
+        }
         eprintln!(
-            "master-table --check: k = {}: {} values recomputed, all within {}",
+            "master-table --check: k = {}: {} values recomputed, all within {}; the levels of {rows} rows checked beyond their ends",
             t.k,
             checked.len(),
             number(NODE_REL_TOL)

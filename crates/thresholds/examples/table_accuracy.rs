@@ -9,7 +9,8 @@
 //! With `answered`, k is drawn from what the committed tables answer (log-uniform over their
 //! range once the k checks cover it, else one of the tables' own k), to measure the tables
 //! where they exist; without it, the tables' coverage of the whole k range 0.005-0.05 is
-//! counted first (without searching the points they decline).
+//! counted first (without searching the points they decline); with `TABLE_DECLINED=1` in the
+//! environment each declined point is printed to stderr (`D x y k x_s` and where it lies).
 //! Each point draws gamma_SV (0.01-0.3 J/m^2), E (0.5-200 GPa), the density (500-5000 kg/m^3),
 //! the reduced radius R (5 nm - 1 cm) and k (0.005-0.05) log-uniformly, nu (0.1-0.45)
 //! uniformly, two identical spheres (R1 = 2R) or a sphere on a wall (R1 = R), and T_vis
@@ -78,6 +79,14 @@ fn main() {
                         ),
                         None => "no end curve (next to the kink of the cliff)".to_string(),
                     };
+                    if std::env::var_os("TABLE_DECLINED").is_some() {
+                        eprintln!(
+                            "D {x:.6} {y:.6} {:.6} {} {}",
+                            p.k,
+                            end.map_or(f64::NAN, |e| e.x_s),
+                            key
+                        );
+                    }
                     *declined.entry(key).or_default() += 1;
                 }
                 answered

@@ -5,7 +5,7 @@
 //! 1. the end curves give x_s and x_on at (y, k) ([`super::ends`]); next to the kink where the
 //!    cliff changes regime, where they are not interpolated, only upper bounds of them, which
 //!    tell "beyond the end" (step 2) and nothing else;
-//! 2. F: for x >= x_s it exceeds [`F_TOP`]; else each table of the k stencil (the table of k
+//! 2. F: for x >= x_s it exceeds [`F_TOP`](super::format::F_TOP); else each table of the k stencil (the table of k
 //!    itself, or the [`K_STENCIL`] tables around it in ln k) gives g = ln(F - 1) at
 //!    (y, u = ln(x_s - x)) where vouched, and the polynomial in ln k through them (quintic)
 //!    combines them; closer to x_s than vouched, F is at least its value at the closest vouched
@@ -17,9 +17,8 @@
 //!    decides).
 
 use super::binary::Table;
-use super::format::F_TOP;
 use super::interp::lagrange_weight;
-use super::table::{Curve, RowsAt};
+use super::table::{Curve, Levels, RowsAt};
 use super::MasterTables;
 
 /// A table answer is given only where a ratio is clearly on one side of the search limit
@@ -87,8 +86,9 @@ struct KStencil<'a> {
     tables: [&'a Table; K_STENCIL],
     /// Each table's rows around the asked y.
     at: [RowsAt; K_STENCIL],
-    /// Whether every table's rows around y have increasing ratios ([`Table::monotone`]).
-    monotone: bool,
+    /// What every table's rows around y promise towards and beyond their ends
+    /// ([`Table::levels_in`]).
+    levels: Levels,
     /// How many of `tables` (and `weights`) are used: 1, or 4 to [`K_STENCIL`].
     n: usize,
     /// The Lagrange weights of the tables at the asked k (the polynomial in ln k).
@@ -151,7 +151,7 @@ impl MasterTables {
                 plain: Default::default(),
                 tables: [t; K_STENCIL],
                 at: [at; K_STENCIL],
-                monotone: t.monotone_in(at),
+                levels: t.levels_in(at),
                 n: 1,
                 weights,
                 interval: None,
@@ -168,12 +168,12 @@ impl MasterTables {
         let first = self.table(s)?;
         let mut tables = [first; K_STENCIL];
         let mut at = [first.rows_at(y)?; K_STENCIL];
-        let mut monotone = true;
+        let mut levels = Levels::UNBOUNDED;
         let mut ln_k = [0.0; K_STENCIL];
         for q in 0..width {
             tables[q] = self.table(s + q)?;
             at[q] = tables[q].rows_at(y)?;
-            monotone &= tables[q].monotone_in(at[q]);
+            levels = levels.min(tables[q].levels_in(at[q]));
             ln_k[q] = ks[s + q].ln();
         }
         let mut weights = [0.0; K_STENCIL];
@@ -184,7 +184,7 @@ impl MasterTables {
             plain: Default::default(),
             tables,
             at,
-            monotone,
+            levels,
             n: width,
             weights,
             interval: Some(i),
@@ -203,7 +203,9 @@ impl MasterTables {
             },
             None => None,
         };
-        let monotone = ks.monotone;
+        // towards the end a ratio is at least its value at a point farther from it, up to the
+        // level where the rows stop increasing
+        let at_least = |g: f64| Eval::AtLeast(g.min((ks.levels.mono - 1.0).ln()));
         // plain: vouched up to x_hi
         let plain = (curve != Curve::OnsetStrip)
             .then(|| {
@@ -254,18 +256,16 @@ impl MasterTables {
                 if u >= lo {
                     return at(u).map_or(Eval::Unknown, Eval::Value);
                 }
-                if monotone && lo.is_finite() {
+                if lo.is_finite() {
                     if let Some(g) = at(lo) {
-                        return Eval::AtLeast(g);
+                        return at_least(g);
                     }
                 }
             }
         }
         // beyond the plain limit without the end: at least the value there
         match plain {
-            Some(hi) if monotone && x > hi && hi.is_finite() => {
-                g_plain(hi).map_or(Eval::Unknown, Eval::AtLeast)
-            }
+            Some(hi) if x > hi && hi.is_finite() => g_plain(hi).map_or(Eval::Unknown, at_least),
             _ => Eval::Unknown,
         }
     }
@@ -308,14 +308,18 @@ impl MasterTables {
         let ends = self.ends().and_then(|e| e.at(y, k));
         let ks = self.k_stencil(k, y)?;
         let beyond = |end: Option<f64>| {
-            // past its end a ratio exceeds F_TOP (rows checked for no bouncing beyond)
+            // past its end a ratio exceeds F_TOP, or at least the level up to which the rows
+            // increase and were checked for no bouncing beyond
+            let level = ks.levels.beyond.min(ks.levels.mono);
             match end {
-                Some(end) if x >= end && ks.monotone => {
-                    Some(if F_TOP > f_max * (1.0 + V_MAX_MARGIN) {
-                        Side::Above
+                Some(end) if x >= end => {
+                    if level > f_max * (1.0 + V_MAX_MARGIN) {
+                        Some(Side::Above)
+                    } else if ks.levels == Levels::UNBOUNDED {
+                        Some(Side::Unknown)
                     } else {
-                        Side::Unknown
-                    })
+                        None
+                    }
                 }
                 _ => None,
             }

@@ -6,7 +6,7 @@
 //! [`crate::bytes`]) from the committed text, read by the library on first use; `std` and
 //! `bytemuck` only.
 
-use super::format::{CellData, EndsData, PieceData, TableData};
+use super::format::{CellData, EndsData, PieceData, TableData, F_TOP};
 use crate::bytes::{self, Reader, Writer};
 use std::borrow::Cow;
 
@@ -59,8 +59,16 @@ pub struct Row {
     pub x_s: f64,
     /// Where F_on = F_TOP.
     pub x_on: f64,
-    /// Both ratios increase with x over the nodes.
+    /// Both ratios increase with x over the nodes, and nothing bounces beyond the ends up to
+    /// [`super::F_TOP`] ([`super::format::RowData::monotone`]).
     pub monotone: bool,
+    /// The ratios increase towards the ends up to this ratio: at every node each of them is at
+    /// least the smaller of its value at any node farther from the end and this (infinite when
+    /// they increase throughout; [`super::format::RowData::increasing_up_to`]).
+    pub mono: f64,
+    /// Nothing bounces (double-collides) beyond the ends below this ratio: [`super::F_TOP`] for
+    /// a monotone row, else what the build checked ([`super::format::RowData::none_beyond`]; 0: unchecked).
+    pub beyond: f64,
     /// In u = ln(x_s - x).
     pub body: Piece,
     /// In w = ln(x_on - x) (F_on only).
@@ -123,6 +131,12 @@ impl Table {
                     x_s: r.x_s,
                     x_on: r.x_on,
                     monotone: r.monotone,
+                    mono: if r.monotone {
+                        f64::INFINITY
+                    } else {
+                        r.increasing_up_to()
+                    },
+                    beyond: if r.monotone { F_TOP } else { r.none_beyond },
                     body: Piece::from_data(&r.body, r.x_s),
                     strip: Piece::from_data(&r.strip, r.x_on),
                 })
@@ -134,7 +148,7 @@ impl Table {
 }
 
 /// The binary form's first bytes.
-const MAGIC: &[u8; 8] = b"STKMT004";
+const MAGIC: &[u8; 8] = b"STKMT005";
 
 impl Piece {
     fn write(&self, w: &mut Writer) {
@@ -190,6 +204,8 @@ fn table_bytes(t: &Table) -> Vec<u8> {
         w.f(r.x_s);
         w.f(r.x_on);
         w.flag(r.monotone);
+        w.f(r.mono);
+        w.f(r.beyond);
         r.body.write(w);
         r.strip.write(w);
     });
@@ -229,12 +245,15 @@ pub fn table_from_bytes(bytes: &'static [u8], i: usize) -> Option<Table> {
     let k = r.f()?;
     let rows = r.list(|r| {
         let (y, x_s, x_on, monotone) = (r.f()?, r.f()?, r.f()?, r.flag()?);
+        let (mono, beyond) = (r.f()?, r.f()?);
         let (body, strip) = (Piece::read(r)?, Piece::read(r)?);
         Some(Row {
             y,
             x_s,
             x_on,
             monotone,
+            mono,
+            beyond,
             body,
             strip,
         })

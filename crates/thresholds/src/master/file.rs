@@ -47,7 +47,7 @@ pub fn table_to_text(t: &TableData) -> String {
     header(&mut out, &t.header);
     let _ = writeln!(out, "k,{}", number(t.k));
     for (j, r) in t.rows.iter().enumerate() {
-        let _ = writeln!(
+        let _ = write!(
             out,
             "row,{},{},{},{}",
             number(r.y),
@@ -55,6 +55,10 @@ pub fn table_to_text(t: &TableData) -> String {
             number(r.x_on),
             u8::from(r.monotone)
         );
+        if !r.monotone && r.none_beyond > 0.0 {
+            let _ = write!(out, ",{}", number(r.none_beyond));
+        }
+        out.push('\n');
         let _ = writeln!(
             out,
             "body,{},{}",
@@ -112,4 +116,42 @@ pub fn ends_to_text(e: &EndsData) -> String {
         let _ = writeln!(out, "kcheck,{}", v.join(","));
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::master::format::{increasing_up_to, parse_table, F_TOP};
+
+    /// A ratio that falls from one node to the next by more than the nodes' noise ends the
+    /// increase; the level is the least ratio from there on (the row is at least the smaller of
+    /// an earlier value and it), and a NaN (no value) interrupts nothing.
+    #[test]
+    fn the_level_where_ratios_stop_increasing() {
+        assert_eq!(increasing_up_to(&[1.0, 2.0, 3.0]), f64::INFINITY);
+        assert_eq!(increasing_up_to(&[1.0, 1.0 - 1e-9, 3.0]), f64::INFINITY);
+        assert_eq!(increasing_up_to(&[1.0, 5.0, 4.0, 4.5, 3.0, 9.0]), 3.0);
+        assert_eq!(increasing_up_to(&[1.0, f64::NAN, 2.0]), f64::INFINITY);
+        assert_eq!(increasing_up_to(&[]), f64::INFINITY);
+    }
+
+    /// A row that is not monotone keeps the level it was checked beyond its ends to (the sixth
+    /// number); a monotone row needs none (F_TOP), an unchecked one reads as 0.
+    #[test]
+    fn the_checked_level_beyond_the_ends_round_trips() {
+        let row = |y: &str, tail: &str| {
+            format!("row,{y},0.4,0.41,{tail}\nbody,1,1\nnode,-17,1.00015,1.00015\n")
+        };
+        let cell = "cell,-1,-1,inf,inf,inf\n";
+        let text = format!(
+            "k,0.01\n{}{cell}{}{cell}{}",
+            row("-4.5", "0,9989.5"),
+            row("-4", "1"),
+            row("-3.5", "0")
+        );
+        let t = parse_table(&text).unwrap();
+        let levels: Vec<f64> = t.rows.iter().map(|r| r.none_beyond).collect();
+        assert_eq!(levels, [9989.5, F_TOP, 0.0]);
+        assert_eq!(parse_table(&table_to_text(&t)).unwrap(), t);
+    }
 }

@@ -6,7 +6,7 @@
 //! A table of one k, as text (`#` lines first, one record a line):
 //! ```text
 //! k,<k>
-//! row,<y>,<x_s>,<x_on>,<monotone 0|1>                       a row of constant y = log10(c_D c_a)
+//! row,<y>,<x_s>,<x_on>,<monotone 0|1>[,<none_beyond>]       a row of constant y = log10(c_D c_a)
 //! body,<d_lo F>,<d_lo F_on>                                 the row's body (d = x_s - x)
 //! node,<x>,<F>,<F_on>                                        x = log10 c_D, F = V_stick/V_stick,JKR
 //! strip,<d_lo F_on>                                         the row's strip (d = x_on - x)
@@ -63,12 +63,51 @@ pub struct RowData {
     /// Both ratios increase with x over the row's nodes, so a point closer to the end than the
     /// vouched nodes has a ratio at least that of the last vouched one.
     pub monotone: bool,
+    /// For a row that is not `monotone`: nothing bounces (double-collides) beyond its ends up to
+    /// this ratio, as the build checked it (the row record's optional sixth number; 0: not
+    /// checked). A monotone row's is [`F_TOP`].
+    pub none_beyond: f64,
     /// Nodes with x < x_s, both ratios, interpolated in u = ln(x_s - x).
     pub body: PieceData,
     /// Nodes between x_s and x_on (the strip where double collisions but no bouncing remain
     /// up to F_TOP), F_on only, interpolated in w = ln(x_on - x); empty where the strip is too
     /// narrow to tabulate.
     pub strip: PieceData,
+}
+
+impl RowData {
+    /// The ratio up to which the row's ratios increase towards its ends, every piece and both
+    /// ratios ([`increasing_up_to`]).
+    pub fn increasing_up_to(&self) -> f64 {
+        increasing_up_to(&self.body.f_stick)
+            .min(increasing_up_to(&self.body.f_onset))
+            .min(increasing_up_to(&self.strip.f_onset))
+    }
+}
+
+/// A ratio may fall by this (relative) from one node to the next and still count as increasing:
+/// on the JKR plateau (F = 1.000155) the nodes scatter by a few 1e-9.
+pub const NODE_NOISE: f64 = 1e-8;
+
+/// The ratio up to which `ratios` (nodes in increasing x, towards the end) increase: the least
+/// of the nodes after the first that falls (by more than [`NODE_NOISE`]), infinite where none
+/// falls. At every node the ratio is then at least the smaller of its value at any earlier node
+/// and this. Next to the kink of the cliff a row's F is the lower of two thresholds and falls
+/// where the second takes over (at F of 30-800); elsewhere the rows are flat to a few 1e-6 at
+/// F_TOP (F of 9990-9999.9), where the search's noise makes them fall a little: increasing up to
+/// there serves every `v_max` below it.
+pub fn increasing_up_to(ratios: &[f64]) -> f64 {
+    // pairs with a NaN (a ratio the search had no value for) count as increasing
+    match ratios
+        .windows(2)
+        .position(|w| w[1] < w[0] * (1.0 - NODE_NOISE))
+    {
+        Some(i) => ratios[i + 1..]
+            .iter()
+            .filter(|r| !r.is_nan())
+            .fold(f64::INFINITY, |a, &b| a.min(b)),
+        None => f64::INFINITY,
+    }
 }
 
 /// The vouched limits of the cell between two rows, or of a k interval in a bin of y.
@@ -255,12 +294,19 @@ pub fn parse_table(text: &str) -> Result<TableData, FormatError> {
         match name {
             "k" => t.k = numbers(n, &rest, 1)?[0],
             "row" => {
-                let v = numbers(n, &rest, 4)?;
+                // the sixth number (none_beyond) only where a row that is not monotone was checked
+                let v = numbers(n, &rest, if rest.len() == 5 { 5 } else { 4 })?;
+                let monotone = v[3] == 1.0;
                 t.rows.push(RowData {
                     y: v[0],
                     x_s: v[1],
                     x_on: v[2],
-                    monotone: v[3] == 1.0,
+                    monotone,
+                    none_beyond: match v.get(4) {
+                        _ if monotone => F_TOP,
+                        Some(&f) => f,
+                        None => 0.0,
+                    },
                     body: PieceData::default(),
                     strip: PieceData::default(),
                 });

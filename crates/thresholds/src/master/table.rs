@@ -15,6 +15,7 @@
 //! plain up to an x, sheared down to a distance to the end.
 
 use super::binary::{self, Piece, Table};
+use super::format::F_TOP;
 use super::interp::{interval, lagrange, local_cubic, local_cubic_both, stencil_start, weights4};
 
 /// Which piece of the rows, and which ratio.
@@ -194,5 +195,42 @@ impl Table {
     /// [`Table::monotone`] on the rows found.
     pub(crate) fn monotone_in(&self, at: RowsAt) -> bool {
         self.rows[at.s..at.s + 4].iter().all(|r| r.monotone)
+    }
+
+    /// Of the rows found: the ratio up to which all of them increase towards their ends
+    /// ([`super::binary::Row::mono`]) and the ratio below which nothing bounces beyond their ends
+    /// ([`super::binary::Row::beyond`]).
+    pub(crate) fn levels_in(&self, at: RowsAt) -> Levels {
+        self.rows[at.s..at.s + 4]
+            .iter()
+            .fold(Levels::UNBOUNDED, |l, r| Levels {
+                mono: l.mono.min(r.mono),
+                beyond: l.beyond.min(r.beyond),
+            })
+    }
+}
+
+/// What rows promise towards and beyond their ends, as ratios (see [`Table::levels_in`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Levels {
+    /// The ratios increase towards the ends up to this ratio.
+    pub mono: f64,
+    /// Nothing bounces (double-collides) beyond the ends below this ratio.
+    pub beyond: f64,
+}
+
+impl Levels {
+    /// Rows that increase throughout with nothing below [`F_TOP`] beyond their ends.
+    pub const UNBOUNDED: Levels = Levels {
+        mono: f64::INFINITY,
+        beyond: F_TOP,
+    };
+
+    /// The lower of each.
+    pub fn min(self, o: Levels) -> Levels {
+        Levels {
+            mono: self.mono.min(o.mono),
+            beyond: self.beyond.min(o.beyond),
+        }
     }
 }

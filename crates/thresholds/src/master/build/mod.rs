@@ -22,6 +22,7 @@
 //! rtol 1e-10: the search's own error (up to a few 1e-6 of V_stick within 1e-3 of the cliff
 //! at the default rtol 1e-8) stays out of the nodes.
 
+pub mod beyond;
 pub mod cells;
 pub mod check;
 pub mod ends;

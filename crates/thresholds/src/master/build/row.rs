@@ -4,7 +4,7 @@
 //! with the nodes.
 
 use super::{agrees, default_search, rel_diff, search, BuildConfig, Cache, Point};
-use crate::master::format::{PieceData, RowData, F_TOP};
+use crate::master::format::{increasing_up_to, PieceData, RowData, F_TOP};
 use crate::master::interp::local_cubic;
 use crate::SearchOptions;
 use greenwood::CrackLaw;
@@ -174,15 +174,23 @@ fn first_nodes(cfg: &BuildConfig, x_start: f64, end: f64) -> Vec<f64> {
     xs
 }
 
-/// Whether nothing bounces (double-collides, for the onset) up to F_TOP beyond `end`.
-fn none_beyond(cfg: &BuildConfig, law: &CrackLaw, y: f64, end: f64, onset: bool) -> bool {
+/// Whether nothing bounces (double-collides, for the onset) below `f_top` V_stick,JKR beyond
+/// `end` (at the distances [`BEYOND`]).
+pub(super) fn none_beyond(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    y: f64,
+    end: f64,
+    onset: bool,
+    f_top: f64,
+) -> bool {
     let opts = SearchOptions {
         rel_tol: cfg.rel_tol,
         solver: cfg.solver,
         ..SearchOptions::exact()
     };
     BEYOND.iter().all(|&d| {
-        let p = search(cfg, law, end + d, y, F_TOP, &opts);
+        let p = search(cfg, law, end + d, y, f_top, &opts);
         if onset {
             p == Point::NoBounce
         } else {
@@ -191,17 +199,9 @@ fn none_beyond(cfg: &BuildConfig, law: &CrackLaw, y: f64, end: f64, onset: bool)
     })
 }
 
-/// A ratio may fall by this (relative) from one node to the next and still count as increasing:
-/// on the JKR plateau (F = 1.000155) the nodes scatter by a few 1e-9.
-const NODE_NOISE: f64 = 1e-8;
-
-/// The ratios increase with x along the nodes (to the nodes' noise).
+/// The ratios increase with x along the nodes (to the nodes' noise, [`crate::master::format::NODE_NOISE`]).
 fn increasing(p: &PieceData) -> bool {
-    let up = |v: &[f64]| {
-        v.windows(2)
-            .all(|w| w[1] >= w[0] * (1.0 - NODE_NOISE) || w[0].is_nan() || w[1].is_nan())
-    };
-    up(&p.f_stick) && up(&p.f_onset)
+    increasing_up_to(&p.f_stick) == f64::INFINITY && increasing_up_to(&p.f_onset) == f64::INFINITY
 }
 
 /// The row at `y` with ends `x_s`, `x_on` (from the end curves).
@@ -232,15 +232,14 @@ pub fn build_row(
             ..PieceData::default()
         }
     };
-    let monotone = increasing(&body)
-        && increasing(&strip)
-        && none_beyond(cfg, law, y, x_s, false)
-        && none_beyond(cfg, law, y, x_on, true);
+    let clear =
+        none_beyond(cfg, law, y, x_s, false, F_TOP) && none_beyond(cfg, law, y, x_on, true, F_TOP);
     RowData {
         y,
         x_s,
         x_on,
-        monotone,
+        monotone: increasing(&body) && increasing(&strip) && clear,
+        none_beyond: if clear { F_TOP } else { 0.0 },
         body,
         strip,
     }

@@ -1,0 +1,107 @@
+//! `cargo xtask master-table --part beyond`: the rows of a committed table that are not monotone
+//! checked for no bouncing beyond their ends up to the ratio where they stop increasing, without
+//! new nodes.
+//!
+//! A row is monotone when its ratios increase towards its ends and nothing bounces beyond them
+//! up to [`F_TOP`]; only then did the tables answer "no bouncing below v_max" beyond the end
+//! and "at least" closer to it than vouched. Most rows that are not monotone fall only where
+//! F is flat at F_TOP (9990-9999.9: the second kind of bouncing, whose threshold rises slowly
+//! there, and the nodes' noise of a few 1e-6), and a row next to the kink of the cliff falls
+//! where the second kind of bouncing takes over (F of 30-800): each increases up to a level
+//! ([`RowData::increasing_up_to`]). Below that level the answers that need
+//! monotone rows hold as well, once nothing is seen to bounce beyond the ends below it: this
+//! pass runs that check ([`BEYOND`](super::row) distances, the exact search up to the level)
+//! and records the level in the row (`none_beyond`; 0 where something bounces).
+
+use super::row::none_beyond;
+use super::BuildConfig;
+use crate::master::format::{RowData, TableData, F_TOP};
+use crate::ThresholdsError;
+use greenwood::CrackLaw;
+use numerics::format::number;
+use rayon::prelude::*;
+
+/// The level checked is this fraction of the level where the ratios stop increasing: below it,
+/// by more than the nodes' noise and the interpolation's error.
+const BELOW_THE_FALL: f64 = 0.999;
+
+/// `table` with each row that is not monotone checked beyond its ends up to
+/// [`BELOW_THE_FALL`] of its level (at most [`F_TOP`]); `progress` is told each row's outcome.
+pub fn check_beyond_table(
+    cfg: &BuildConfig,
+    table: &TableData,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<TableData, ThresholdsError> {
+    let law = CrackLaw::new(table.k)?;
+    let rows = table
+        .rows
+        .par_iter()
+        .map(|row| {
+            if row.monotone {
+                return row.clone();
+            }
+            let level = F_TOP.min(BELOW_THE_FALL * row.increasing_up_to());
+            let clear = none_beyond(cfg, &law, row.y, row.x_s, false, level)
+                && none_beyond(cfg, &law, row.y, row.x_on, true, level);
+            progress(&format!(
+                "k = {}, row y = {}: {} beyond its ends below F = {}",
+                table.k,
+                row.y,
+                if clear {
+                    "nothing bounces"
+                } else {
+                    "something bounces"
+                },
+                number(level)
+            ));
+            RowData {
+                none_beyond: if clear { level } else { 0.0 },
+                ..row.clone()
+            }
+        })
+        .collect();
+    // the nodes' provenance: the commit that built (or last grew) the table, before the caller
+    // stamps its own
+    let built = table
+        .header
+        .iter()
+        .find_map(|h| h.strip_prefix("commit: "))
+        .unwrap_or("an unknown commit");
+    let mut header = table.header.clone();
+    header.push(format!(
+        "beyond: each row that is not monotone checked for no bouncing beyond its ends below {} of the ratio where its ratios stop increasing (the row's sixth number; cargo xtask master-table --part beyond, on the table of commit {built})",
+        number(BELOW_THE_FALL)
+    ));
+    Ok(TableData {
+        k: table.k,
+        header,
+        rows,
+        cells: table.cells.clone(),
+    })
+}
+
+/// `--check` of the levels: every `every`-th row of `table` that is not monotone and carries a
+/// level, checked beyond its ends again below it; the y of the first row at which something now
+/// bounces, if any, and how many rows were checked.
+pub fn check_levels(
+    cfg: &BuildConfig,
+    table: &TableData,
+    every: usize,
+) -> Result<(Option<f64>, usize), ThresholdsError> {
+    let law = CrackLaw::new(table.k)?;
+    let rows: Vec<&RowData> = table
+        .rows
+        .iter()
+        .filter(|r| !r.monotone && r.none_beyond > 0.0)
+        .step_by(every.max(1))
+        .collect();
+    let moved = rows
+        .par_iter()
+        .filter(|r| {
+            !(none_beyond(cfg, &law, r.y, r.x_s, false, r.none_beyond)
+                && none_beyond(cfg, &law, r.y, r.x_on, true, r.none_beyond))
+        })
+        .map(|r| r.y)
+        .min_by(f64::total_cmp);
+    Ok((moved, rows.len()))
+}
