@@ -121,9 +121,14 @@ pub fn run_build(
     only: &[usize],
     y_min: Option<f64>,
     extend: bool,
+    no_split: bool,
 ) -> Result<(), Error> {
     let start = Instant::now();
     let mut cfg = BuildConfig::standard();
+    if no_split {
+        // no cell is split: each keeps the limits its checks pass with the rows it has
+        cfg.min_y_step = f64::INFINITY;
+    }
     if let Some(y) = y_min {
         if !(y >= cfg.y_range.0 && y < cfg.y_range.1 && (y * 2.0).fract() == 0.0) {
             return Err(format!(
@@ -179,8 +184,22 @@ pub fn run_build(
                     was("commit: ").map_or("an unknown commit".into(), |c| c.replace(": ", " "))
                 )
             });
+            // the passes run on the committed table since it was built say so still
+            let passes: Vec<String> = from.as_ref().map_or(Vec::new(), |t| {
+                t.header
+                    .iter()
+                    .filter(|h| h.starts_with("revouched:") || h.starts_with("beyond:"))
+                    .cloned()
+                    .collect()
+            });
             let mut t = extend_table(&cfg, i, from, &ends, &progress)?;
             t.header.extend(kept);
+            t.header.extend(passes);
+            if no_split {
+                t.header.push(
+                    "no split: the cells never checked were checked once with the rows there, without adding rows (--extend --no-split)".into(),
+                );
+            }
             t.header.splice(0..0, stamp.iter().cloned());
             let path = table_path(root, t.k);
             std::fs::write(&path, table_to_text(&t))?;
