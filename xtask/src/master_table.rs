@@ -139,21 +139,18 @@ pub fn run_build(
         }
         cfg.y_range.0 = y;
     }
-    let stamp = [
-        "command: cargo xtask master-table".to_string(),
-        format!("commit: {}", commit(root)),
-    ];
+    let stamp = |header: &mut Vec<String>| stamp(header, root);
     let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
     if matches!(part, Part::All | Part::Ends) {
         let mut ends = build_ends(&cfg, &progress);
-        ends.header.splice(0..0, stamp.iter().cloned());
+        stamp(&mut ends.header);
         std::fs::write(ends_path(root), ends_to_text(&ends))?;
         progress(&format!("wrote {}", ends_path(root).display()));
     }
     if part == Part::EndsRepair {
         let previous = committed_ends(root)?;
         let mut ends = repair_ends(&cfg, Some(&previous), &progress);
-        ends.header.splice(0..0, stamp.iter().cloned());
+        stamp(&mut ends.header);
         std::fs::write(ends_path(root), ends_to_text(&ends))?;
         progress(&format!("wrote {}", ends_path(root).display()));
     }
@@ -200,10 +197,8 @@ pub fn run_build(
                     "no split: the cells never checked were checked once with the rows there, without adding rows (--extend --no-split)".into(),
                 );
             }
-            t.header.splice(0..0, stamp.iter().cloned());
-            let path = table_path(root, t.k);
-            std::fs::write(&path, table_to_text(&t))?;
-            progress(&format!("wrote {}", path.display()));
+            stamp(&mut t.header);
+            write_table(root, &t, &progress)?;
         }
     }
     if matches!(part, Part::Revouch | Part::Beyond) {
@@ -221,28 +216,45 @@ pub fn run_build(
             } else {
                 check_beyond_table(&cfg, &t, &progress)?
             };
-            t.header
-                .retain(|h| !h.starts_with("commit:") && !h.starts_with("command:"));
-            t.header.splice(0..0, stamp.iter().cloned());
-            let path = table_path(root, t.k);
-            std::fs::write(&path, table_to_text(&t))?;
-            progress(&format!("wrote {}", path.display()));
+            stamp(&mut t.header);
+            write_table(root, &t, &progress)?;
         }
     }
     if matches!(part, Part::All | Part::Kcheck) {
         let ends = committed_ends(root)?;
         let tables = committed_tables(root)?;
         let mut checked = k_checks(&cfg, &tables, &ends, &progress)?;
-        checked
-            .header
-            .retain(|h| !h.starts_with("commit:") && !h.starts_with("command:"));
-        checked.header.splice(0..0, stamp.iter().cloned());
+        stamp(&mut checked.header);
         std::fs::write(ends_path(root), ends_to_text(&checked))?;
         progress(&format!(
             "wrote {} with the k checks",
             ends_path(root).display()
         ));
     }
+    Ok(())
+}
+
+/// Puts the command that writes a file and the commit it runs at first in its `header`, in
+/// place of those of an earlier run (what else the header says of earlier runs stays).
+fn stamp(header: &mut Vec<String>, root: &Path) {
+    header.retain(|h| !h.starts_with("commit:") && !h.starts_with("command:"));
+    let command: Vec<String> = std::iter::once("cargo xtask".to_string())
+        .chain(std::env::args().skip(1))
+        .collect();
+    header.splice(
+        0..0,
+        [
+            format!("command: {}", command.join(" ")),
+            format!("commit: {}", commit(root)),
+        ],
+    );
+}
+
+/// Writes the table `t` to its file under `root`, and says so.
+fn write_table(root: &Path, t: &TableData, progress: &dyn Fn(&str)) -> Result<(), Error> {
+    let path = table_path(root, t.k);
+    std::fs::write(&path, table_to_text(t))?;
+    progress(&format!("wrote {}", path.display()));
     Ok(())
 }
 

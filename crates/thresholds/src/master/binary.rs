@@ -200,12 +200,13 @@ fn table_bytes(t: &Table) -> Vec<u8> {
     let mut w = Writer::default();
     w.f(t.k);
     w.list(&t.rows, |w, r| {
-        w.f(r.y);
-        w.f(r.x_s);
-        w.f(r.x_on);
+        for v in [r.y, r.x_s, r.x_on] {
+            w.f(v);
+        }
         w.flag(r.monotone);
-        w.f(r.mono);
-        w.f(r.beyond);
+        for v in [r.mono, r.beyond] {
+            w.f(v);
+        }
         r.body.write(w);
         r.strip.write(w);
     });

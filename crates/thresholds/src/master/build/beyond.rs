@@ -60,13 +60,7 @@ pub fn check_beyond_table(
             }
         })
         .collect();
-    // the nodes' provenance: the commit that built (or last grew) the table, before the caller
-    // stamps its own
-    let built = table
-        .header
-        .iter()
-        .find_map(|h| h.strip_prefix("commit: "))
-        .unwrap_or("an unknown commit");
+    let built = super::built_at(table);
     let mut header = table.header.clone();
     header.push(format!(
         "beyond: each row that is not monotone checked for no bouncing beyond its ends below {} of the ratio where its ratios stop increasing (the row's sixth number; cargo xtask master-table --part beyond, on the table of commit {built})",

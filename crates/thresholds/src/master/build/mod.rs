@@ -142,6 +142,16 @@ impl BuildConfig {
     }
 }
 
+/// The commit that built (or last grew) `table`, from its header: the nodes' provenance, which
+/// a pass over a committed table records before the caller stamps its own commit.
+pub fn built_at(table: &crate::master::format::TableData) -> &str {
+    table
+        .header
+        .iter()
+        .find_map(|h| h.strip_prefix("commit: "))
+        .unwrap_or("an unknown commit")
+}
+
 /// `k0 2^(i / per_octave)`, exact at whole octaves.
 pub fn grid_k(k0: f64, per_octave: usize, i: usize) -> f64 {
     let (whole, part) = (i / per_octave, i % per_octave);

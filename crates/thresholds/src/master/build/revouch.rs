@@ -168,13 +168,7 @@ pub fn revouch_table(
             cell
         })
         .collect();
-    // the nodes' provenance: the commit that built (or last grew) the table, before the caller
-    // stamps its own
-    let built = table
-        .header
-        .iter()
-        .find_map(|h| h.strip_prefix("commit: "))
-        .unwrap_or("an unknown commit");
+    let built = super::built_at(table);
     let mut header = table.header.clone();
     header.push(format!(
         "revouched: the pieces and cells vouched on towards the ends while the midpoint checks pass to {} and the default search agrees to {} up to ratios of {}, to {} above (cargo xtask master-table --part revouch, on the table of commit {built})",
