@@ -23,7 +23,7 @@ use rayon::prelude::*;
 
 /// The level checked is this fraction of the level where the ratios stop increasing: below it,
 /// by more than the nodes' noise and the interpolation's error.
-const BELOW_THE_FALL: f64 = 0.999;
+pub const BELOW_THE_FALL: f64 = 0.999;
 
 /// `table` with each row that is not monotone checked beyond its ends up to
 /// [`BELOW_THE_FALL`] of its level (at most [`F_TOP`]); `progress` is told each row's outcome.
