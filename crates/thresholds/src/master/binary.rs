@@ -6,7 +6,7 @@
 //! [`crate::bytes`]) from the committed text, read by the library on first use; `std` and
 //! `bytemuck` only.
 
-use super::format::{CellData, EndsData, PieceData, TableData, F_TOP};
+use super::format::{CellData, EndsData, PieceData, TableData};
 use crate::bytes::{self, Reader, Writer};
 use std::borrow::Cow;
 
@@ -136,7 +136,8 @@ impl Table {
                     } else {
                         r.increasing_up_to()
                     },
-                    beyond: if r.monotone { F_TOP } else { r.none_beyond },
+                    // F_TOP for a monotone row already (`RowData::none_beyond`)
+                    beyond: r.none_beyond,
                     body: Piece::from_data(&r.body, r.x_s),
                     strip: Piece::from_data(&r.strip, r.x_on),
                 })
