@@ -58,8 +58,13 @@ enum Command {
         /// With `--extend`: check the cells never checked once with the rows there, keeping the
         /// limits their checks pass, instead of adding rows where they fail (minutes instead of
         /// hours where the second kind of bouncing makes the rows disagree).
-        #[arg(long, requires = "extend")]
+        #[arg(long, requires = "extend", conflicts_with = "min_y_step")]
         no_split: bool,
+        /// With `--extend`: split failing cells only down to this spacing of rows in y (the
+        /// build's 1/64 by default), so that a cell where the rows disagree gets a row or two,
+        /// not dozens.
+        #[arg(long, requires = "extend")]
+        min_y_step: Option<f64>,
     },
     /// Build the restitution tables (V_out and e of single collisions over the two
     /// dimensionless numbers, k and the impact speed) with the ODE, on the committed master
@@ -142,10 +147,19 @@ fn main() -> ExitCode {
             y_min,
             extend,
             no_split,
+            min_y_step,
             ..
-        } => {
-            xtask::master_table::run_build(&workspace_root(), part, &only, y_min, extend, no_split)
-        }
+        } => xtask::master_table::run_build(
+            &workspace_root(),
+            part,
+            &only,
+            y_min,
+            xtask::master_table::Extend {
+                extend,
+                no_split,
+                min_y_step,
+            },
+        ),
         Command::Docs => {
             xtask::docs::build(&workspace_root(), xtask::docs::Package::Install, None).map(|_| ())
         }

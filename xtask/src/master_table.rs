@@ -51,6 +51,17 @@ pub enum Part {
     Beyond,
 }
 
+/// How `--part tables` treats the committed tables.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Extend {
+    /// Grow the committed tables instead of building them anew.
+    pub extend: bool,
+    /// Check the cells never checked once, without adding rows.
+    pub no_split: bool,
+    /// Split failing cells only down to this spacing of rows in y.
+    pub min_y_step: Option<f64>,
+}
+
 /// The directory of the committed tables.
 pub fn data_dir(root: &Path) -> PathBuf {
     root.join("crates/thresholds/data")
@@ -120,14 +131,28 @@ pub fn run_build(
     part: Part,
     only: &[usize],
     y_min: Option<f64>,
-    extend: bool,
-    no_split: bool,
+    how: Extend,
 ) -> Result<(), Error> {
+    let Extend {
+        extend,
+        no_split,
+        min_y_step,
+    } = how;
     let start = Instant::now();
     let mut cfg = BuildConfig::standard();
     if no_split {
         // no cell is split: each keeps the limits its checks pass with the rows it has
         cfg.min_y_step = f64::INFINITY;
+    }
+    if let Some(step) = min_y_step {
+        if !(step >= cfg.min_y_step && step <= cfg.y_step) {
+            return Err(format!(
+                "--min-y-step = {step}: must be from {} to {}",
+                cfg.min_y_step, cfg.y_step
+            )
+            .into());
+        }
+        cfg.min_y_step = step;
     }
     if let Some(y) = y_min {
         if !(y >= cfg.y_range.0 && y < cfg.y_range.1 && (y * 2.0).fract() == 0.0) {
@@ -196,6 +221,12 @@ pub fn run_build(
                 t.header.push(
                     "no split: the cells never checked were checked once with the rows there, without adding rows (--extend --no-split)".into(),
                 );
+            }
+            if let Some(step) = min_y_step {
+                t.header.push(format!(
+                    "split: the cells never checked split down to rows {} apart in y (--extend --min-y-step)",
+                    number(step)
+                ));
             }
             stamp(&mut t.header);
             write_table(root, &t, &progress)?;
