@@ -253,11 +253,12 @@ pub fn build_table(
 }
 
 /// The table of `k_index` grown from `committed` (the same k): its rows kept, rows added every
-/// [`BuildConfig::y_step`] below its lowest down to `cfg.y_range.0`, and every cell never checked
-/// (the new ones, and the first and last of a table built before edge cells were checked: their
-/// stencil is the four rows nearest, shifted inward; the first only if it lies above
-/// `cfg.y_range.0`) checked and split as in a build. Without `committed`, the whole table is
-/// built.
+/// [`BuildConfig::y_step`] below its lowest down to `cfg.y_range.0`, and the cells whose stencil
+/// changed (the new ones and the old first one, whose stencil, the four rows nearest, now
+/// reaches into the new rows; the first only if it lies above `cfg.y_range.0`) checked and split
+/// as in a build. The cells above keep their rows and limits: the restitution tables were built
+/// on them (`cargo xtask restitution-table --check` recomputes them from the master tables to
+/// 1e-7). Without `committed`, the whole table is built.
 pub fn extend_table(
     cfg: &BuildConfig,
     k_index: usize,
@@ -305,11 +306,10 @@ pub fn extend_table(
     cells.extend(old_cells.into_iter().map(Some));
     rows.extend(old_rows);
     cells.truncate(rows.len().saturating_sub(1));
-    // the new cells, the old first one (its stencil changed, or never checked; not below y0)
-    // and the last one (never checked)
-    let last = cells.len().saturating_sub(1);
+    // the new cells and the old first one (its stencil changed; not below y0); every other
+    // cell of the committed table keeps its rows and limits
     for (j, c) in cells.iter_mut().enumerate() {
-        if (j <= added && rows[j].y >= y0) || j == last {
+        if j <= added && rows[j].y >= y0 {
             *c = None;
         }
     }
