@@ -308,9 +308,10 @@ impl MasterTables {
         let ends = self.ends().and_then(|e| e.at(y, k));
         let ks = self.k_stencil(k, y)?;
         let beyond = |end: Option<f64>| {
-            // past its end a ratio exceeds F_TOP, or at least the level up to which the rows
-            // increase and were checked for no bouncing beyond
-            let level = ks.levels.beyond.min(ks.levels.mono);
+            // past its end a ratio exceeds the level up to which the rows were checked for no
+            // bouncing beyond their ends (F_TOP for monotone rows); whether the rows increase
+            // towards their ends does not matter there
+            let level = ks.levels.beyond;
             match end {
                 Some(end) if x >= end => {
                     if level > f_max * (1.0 + V_MAX_MARGIN) {

@@ -1,6 +1,6 @@
 //! `cargo xtask master-table --part beyond`: the rows of a committed table that are not monotone
-//! checked for no bouncing beyond their ends up to the ratio where they stop increasing, without
-//! new nodes.
+//! checked for no bouncing beyond their ends, without new nodes: up to [`BELOW_THE_FALL`] of
+//! [`F_TOP`] where nothing bounces there, else up to the ratio where they stop increasing.
 //!
 //! A row is monotone when its ratios increase towards its ends and nothing bounces beyond them
 //! up to [`F_TOP`]; only then did the tables answer "no bouncing below v_max" beyond the end
@@ -12,6 +12,13 @@
 //! monotone rows hold as well, once nothing is seen to bounce beyond the ends below it: this
 //! pass runs that check ([`BEYOND`](super::row) distances, the exact search up to the level)
 //! and records the level in the row (`none_beyond`; 0 where something bounces).
+//!
+//! "No bouncing beyond the end" rests on that check alone, not on how the row rises towards
+//! its end (the same three distances vouch for it in a monotone row), so each row is first
+//! checked up to [`BELOW_THE_FALL`] of [`F_TOP`]: next to the kink, where rows fall at F of
+//! 30-800, nothing bounces beyond their ends up to there (the left branch of the cliff, where F
+//! rises as a power of c_D), and "no bouncing below v_max" is answered there for the default
+//! v_max (1000 V_stick,JKR) as well.
 
 use super::row::none_beyond;
 use super::BuildConfig;
@@ -26,7 +33,8 @@ use rayon::prelude::*;
 pub const BELOW_THE_FALL: f64 = 0.999;
 
 /// `table` with each row that is not monotone checked beyond its ends up to
-/// [`BELOW_THE_FALL`] of its level (at most [`F_TOP`]); `progress` is told each row's outcome.
+/// [`BELOW_THE_FALL`] of [`F_TOP`], or where something bounces there, up to [`BELOW_THE_FALL`]
+/// of the level where its ratios stop increasing; `progress` is told each row's outcome.
 pub fn check_beyond_table(
     cfg: &BuildConfig,
     table: &TableData,
@@ -40,9 +48,17 @@ pub fn check_beyond_table(
             if row.monotone {
                 return row.clone();
             }
-            let level = F_TOP.min(BELOW_THE_FALL * row.increasing_up_to());
-            let clear = none_beyond(cfg, &law, row.y, row.x_s, false, level)
-                && none_beyond(cfg, &law, row.y, row.x_on, true, level);
+            let clear_to = |level: f64| {
+                none_beyond(cfg, &law, row.y, row.x_s, false, level)
+                    && none_beyond(cfg, &law, row.y, row.x_on, true, level)
+            };
+            let top = BELOW_THE_FALL * F_TOP;
+            let fall = F_TOP.min(BELOW_THE_FALL * row.increasing_up_to());
+            let (level, clear) = if fall < top && clear_to(top) {
+                (top, true)
+            } else {
+                (fall, clear_to(fall))
+            };
             progress(&format!(
                 "k = {}, row y = {}: {} beyond its ends below F = {}",
                 table.k,
@@ -63,7 +79,7 @@ pub fn check_beyond_table(
     let built = super::built_at(table);
     let mut header = table.header.clone();
     header.push(format!(
-        "beyond: each row that is not monotone checked for no bouncing beyond its ends below {} of the ratio where its ratios stop increasing (the row's sixth number; cargo xtask master-table --part beyond, on the table of commit {built})",
+        "beyond: each row that is not monotone checked for no bouncing beyond its ends below {} of {F_TOP}, else of the ratio where its ratios stop increasing (the row's sixth number; cargo xtask master-table --part beyond, on the table of commit {built})",
         number(BELOW_THE_FALL)
     ));
     Ok(TableData {
