@@ -51,8 +51,9 @@ enum Command {
         #[arg(long, allow_hyphen_values = true)]
         y_min: Option<f64>,
         /// With `--part tables`: grow the committed tables instead of building them anew: their
-        /// rows kept, rows added below down to `--y-min`, and their cells never checked (the
-        /// first and last) checked.
+        /// rows kept, rows added below down to `--y-min`, and the cells whose stencil changed
+        /// (the new ones and the old first one) checked; every other cell is kept as it is (the
+        /// restitution tables were built on it).
         #[arg(long)]
         extend: bool,
         /// With `--extend`: check the cells never checked once with the rows there, keeping the

@@ -8,7 +8,7 @@
 //! 1e-10 in x, so that the bicubic interpolant is good to about 1e-9.
 
 use super::format::EndsData;
-use super::interp::uniform_weights;
+use super::interp::{cell_of, uniform_weights};
 
 /// Where the end curves are not interpolated (next to the kink where the cliff changes regime),
 /// a point this far (in x) beyond the largest end of the four grid points around it is beyond
@@ -152,15 +152,6 @@ impl EndCurves {
             x_on: o.max(s) + KINK_MARGIN,
         })
     }
-}
-
-/// The first node of the interval of a uniform grid of `n` nodes (at 0, 1, ..., n - 1) that
-/// holds the fractional position `f` (the last interval at the last node); `None` outside.
-fn cell_of(f: f64, n: usize) -> Option<usize> {
-    /// A position this far outside the grid (in steps) is taken as its end: rounding.
-    const EDGE: f64 = 1e-9;
-    (n >= 2 && f >= -EDGE && f <= (n - 1) as f64 + EDGE)
-        .then(|| (f.max(0.0).floor() as usize).min(n - 2))
 }
 
 #[cfg(test)]

@@ -83,14 +83,26 @@ pub(crate) fn local_cubic_both(xs: &[f64], ys: [&[f64]; 2], x: f64) -> [f64; 2] 
     ]
 }
 
+/// Whether the fractional position `f` lies on a uniform grid of `n` nodes (at 0, 1, ...,
+/// n - 1): a position up to 1e-9 steps outside is taken as its end (rounding).
+fn on_grid(f: f64, n: usize) -> bool {
+    const EDGE: f64 = 1e-9;
+    f >= -EDGE && f <= (n as f64 - 1.0) + EDGE
+}
+
+/// The first node of the interval of a uniform grid of `n` nodes (at 0, 1, ..., n - 1) that
+/// holds the fractional position `f` (the last interval at the last node); `None` outside the
+/// grid or with fewer than two nodes.
+pub(crate) fn cell_of(f: f64, n: usize) -> Option<usize> {
+    (n >= 2 && on_grid(f, n)).then(|| (f.max(0.0).floor() as usize).min(n - 2))
+}
+
 /// The first of the four nodes of a uniform grid of `n` nodes (at 0, 1, ..., n - 1) around the
 /// fractional position `f`, and the cubic Lagrange weights of those four nodes at `f`; `None`
 /// when `f` lies outside the grid (beyond a rounding margin) or the grid has fewer than four
 /// nodes.
 pub(crate) fn uniform_weights(f: f64, n: usize) -> Option<(usize, [f64; 4])> {
-    /// A position this far outside the grid (in steps) is taken as its end: rounding.
-    const EDGE: f64 = 1e-9;
-    if n < 4 || !(f >= -EDGE && f <= (n - 1) as f64 + EDGE) {
+    if n < 4 || !on_grid(f, n) {
         return None;
     }
     let i0 = (f.floor() as i64 - 1).clamp(0, n as i64 - 4) as usize;
