@@ -281,9 +281,17 @@ def fastest_collision(sigma, sigma_gas, v_rel) -> np.ndarray:
     return np.where(populated.any(axis=1), fastest, np.nan)
 
 
+def above_floor(state: dict) -> np.ndarray:
+    """The dust surface density (r, m) above DustPy's floor value (less than one body in the
+    annulus): bins at the floor hold nothing, though in the cells beyond the dust they are
+    all the dust there is."""
+    return np.clip(state["Sigma_dust"] - state.get("Sigma_floor", 0.0), 0.0, None)
+
+
 def largest_size(state: dict) -> float:
-    """The radius (m) of the largest bodies in a populated bin (``populated_bins``)."""
-    populated = populated_bins(state["Sigma_dust"], state["Sigma_gas"])
+    """The radius (m) of the largest bodies in a populated bin (``populated_bins``, floor
+    values apart)."""
+    populated = populated_bins(above_floor(state), state["Sigma_gas"])
     return float(np.max(np.where(populated, state["a"], 0.0))) * 1e-2
 
 
@@ -419,8 +427,8 @@ def report(states: dict) -> None:
                         f"{p['St'][:-1][where].min():.2g}-{p['St'][:-1][where].max():.2g}")
         mass = (s["Sigma_dust"].sum(axis=1)[:-1] * dust).sum()
         gas = (s["Sigma_gas"][:-1] * dust).sum()
-        # bodies, not floor values (less than one body in the annulus), in the grid's top decade
-        above = np.clip(s["Sigma_dust"] - s.get("Sigma_floor", 0.0), 0.0, None)
+        # bodies, not floor values, in the grid's top decade
+        above = above_floor(s)
         top = above[:, s["m"] > s["m"][-1] / 10].sum() / above.sum()
         for when, before in s.get("grid_widened", NOT_WIDENED):
             print(f"{name}: mass grid widened at {when:.3g} yr from {before:.0e} g "

@@ -218,6 +218,18 @@ def test_fastest_collision_counts_populated_bins_only(root):
     assert fastest[0] == 3.0 and np.isnan(fastest[1])
 
 
+def test_largest_size_ignores_floor_values(root):
+    # truth by hand: a cell holding dust in its two small bins and one beyond the dust whose
+    # bins all sit at the floor (it would otherwise count as populated up to the grid's top)
+    case_study = _case_study(root)
+    floor = np.full((2, 3), 1e-10)
+    state = {"Sigma_dust": np.array([[1.0, 1.0, 1e-10], [1e-10, 1e-10, 1e-10]]),
+             "Sigma_floor": floor, "Sigma_gas": np.array([100.0, 1e-7]),
+             "a": np.array([[1.0, 10.0, 1e6]] * 2)}
+    assert case_study.largest_size(state) == 0.1  # 10 cm, in m
+    assert case_study.largest_size({**state, "Sigma_floor": 0.0}) == 1e4
+
+
 def test_posteriors_bracket_the_disc():
     # truth: Posterior.v_frag, the posterior's T_vis carried to the monomer by the size law
     import warnings
