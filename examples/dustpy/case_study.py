@@ -268,7 +268,8 @@ def populated_bins(sigma, sigma_gas) -> np.ndarray:
     sigma = np.asarray(sigma, dtype=float)
     dust = sigma.sum(axis=1)
     holds_dust = dust / np.asarray(sigma_gas, dtype=float) >= EMPTY_D2G
-    return (sigma / dust[:, None] >= POPULATED) & holds_dust[:, None]
+    with np.errstate(invalid="ignore", divide="ignore"):  # 0/0 in a cell without dust: False
+        return (sigma / dust[:, None] >= POPULATED) & holds_dust[:, None]
 
 
 def fastest_collision(sigma, sigma_gas, v_rel) -> np.ndarray:
