@@ -21,7 +21,9 @@ states, and prints the numbers the documentation quotes.
     python examples/dustpy/case_study.py [--years 1e5] [--out-dir docs/figures]
     python examples/dustpy/case_study.py --replot     # the figures from the saved .npz
     python examples/dustpy/case_study.py --resume     # go on from the runs' last checkpoints
-    python examples/dustpy/case_study.py --years 1e4 --mmax 1e15   # the 1e4-year figures
+    python examples/dustpy/case_study.py --nr 50 --checkpoints data/dustpy_case_study --resume
+        # the documentation's 1e5-year figures, from the committed checkpoints (seconds)
+    python examples/dustpy/case_study.py --years 1e4 --mmax 1e15   # 1e4 years from scratch
 
 Needs DustPy (``pip install dustpy``, which needs gfortran), pandas and matplotlib. DustPy
 works in cgs: V_frag enters it in cm/s (``stickiness.dustpy`` converts). The cost on 2 cores
