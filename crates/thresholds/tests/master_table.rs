@@ -170,6 +170,28 @@ fn the_first_cells_agree_with_the_search() {
     assert!(answered * 5 >= n, "answered {answered} of {n}");
 }
 
+/// In the first and the last interval of k the sextic through seven tables answers
+/// (`K_STENCIL_EDGE`): at points where the quintic through six missed the exact search by up
+/// to 2.6e-6 (so the k checks refused it), the tables now answer, within 1e-5 of the exact
+/// search ([`checked_table_answer`]). The points: the ones `examples/table_accuracy.rs` listed
+/// as declined before (2026-11-27), F = 17 to 700.
+#[test]
+fn the_end_intervals_of_k_agree_with_the_search() {
+    let points = [
+        (-1.094788, -4.095806, 0.046104),
+        (-1.099735, -3.959702, 0.047059),
+        (-1.383768, -4.348049, 0.049542),
+        (-1.067420, -3.850801, 0.044004),
+        (-0.742408, -4.014833, 0.005686),
+        (-0.351498, -2.810375, 0.005560),
+    ];
+    let answered = points
+        .iter()
+        .filter(|&&(x, y, k)| checked_table_answer(x, y, k).is_some())
+        .count();
+    assert!(answered >= 5, "answered {answered} of {}", points.len());
+}
+
 /// Next to the kink of the cliff (where the two kinds of bouncing meet and the end curves are
 /// not interpolated), the tables answer only "no bouncing" beyond an upper bound of the end (the
 /// largest end at the four grid points around, plus 1e-5), and only where the rows around were

@@ -6,9 +6,9 @@
 //!    cliff changes regime, where they are not interpolated, only upper bounds of them, which
 //!    tell "beyond the end" (step 2) and nothing else;
 //! 2. F: for x >= x_s it exceeds [`F_TOP`](super::format::F_TOP); else each table of the k stencil (the table of k
-//!    itself, or the [`K_STENCIL`] tables around it in ln k) gives g = ln(F - 1) at
-//!    (y, u = ln(x_s - x)) where vouched, and the polynomial in ln k through them (quintic)
-//!    combines them; closer to x_s than vouched, F is at least its value at the closest vouched
+//!    itself, or the [`K_STENCIL`] tables around it in ln k, [`K_STENCIL_EDGE`] in the end
+//!    intervals) gives g = ln(F - 1) at (y, u = ln(x_s - x)) where vouched, and the polynomial
+//!    in ln k through them (quintic; sextic in the end intervals) combines them; closer to x_s than vouched, F is at least its value at the closest vouched
 //!    distance (the rows' ratios increase towards the end);
 //! 3. F_on likewise, on the strip (w = ln(x_on - x)) for x within half a strip of x_s, on the
 //!    body elsewhere;
@@ -35,6 +35,15 @@ const SAME_K: f64 = 1e-12;
 /// from -4 to -1.5 (so the k checks, to 2e-6, refused it there), the quintic by at most 1.2e-6.
 /// Fewer committed tables (at least four) give a lower degree.
 pub const K_STENCIL: usize = 6;
+
+/// How many tables answer a k in the first or the last interval of k, where [`K_STENCIL`]
+/// tables lie four on one side and two on the other, and the polynomial is as far from its
+/// middle as it gets: one more, the sextic. Measured at 12 points between k = 0.0403 and
+/// 0.0495 and between 0.0056 and 0.0063 (y = -4.6 to -2.8, F = 17 to 2700, against the exact
+/// search): the quintic through the last (first) six tables misses F by up to 2.6e-6 (so the k
+/// checks, to 2e-6, refused it there), the sextic through seven by at most 1.9e-6 and mostly
+/// below 8e-7.
+pub const K_STENCIL_EDGE: usize = 7;
 
 /// What the tables say of one ratio.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -75,7 +84,8 @@ fn side(e: Eval, f_max: f64) -> Side {
 /// A plain pair kept: `((y, x), [g F, g F_on])`.
 type PlainPair = ((f64, f64), Option<[f64; 2]>);
 
-/// The tables that answer at (k, y): one (k is a table's own) or [`K_STENCIL`] around k in ln k,
+/// The tables that answer at (k, y): one (k is a table's own) or [`K_STENCIL`] around k in ln k
+/// ([`K_STENCIL_EDGE`] in the first and the last interval),
 /// with the interval of k between two tables (for the k checks), the Lagrange weights of k and
 /// each table's four rows around y (found once an answer). Fixed arrays: no allocation per
 /// answer.
@@ -83,16 +93,16 @@ struct KStencil<'a> {
     /// The last plain pair asked for: F and F_on are asked at the same point, and one search
     /// along each row serves both.
     plain: std::cell::Cell<Option<PlainPair>>,
-    tables: [&'a Table; K_STENCIL],
+    tables: [&'a Table; K_STENCIL_EDGE],
     /// Each table's rows around the asked y.
-    at: [RowsAt; K_STENCIL],
+    at: [RowsAt; K_STENCIL_EDGE],
     /// What every table's rows around y promise towards and beyond their ends
     /// ([`Table::levels_in`]).
     levels: Levels,
-    /// How many of `tables` (and `weights`) are used: 1, or 4 to [`K_STENCIL`].
+    /// How many of `tables` (and `weights`) are used: 1, or 4 to [`K_STENCIL_EDGE`].
     n: usize,
     /// The Lagrange weights of the tables at the asked k (the polynomial in ln k).
-    weights: [f64; K_STENCIL],
+    weights: [f64; K_STENCIL_EDGE],
     /// The k interval (between tables i and i + 1), `None` at a table's own k.
     interval: Option<usize>,
 }
@@ -145,12 +155,12 @@ impl MasterTables {
         if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
             let t = self.table(i)?;
             let at = t.rows_at(y)?;
-            let mut weights = [0.0; K_STENCIL];
+            let mut weights = [0.0; K_STENCIL_EDGE];
             weights[0] = 1.0;
             return Some(KStencil {
                 plain: Default::default(),
-                tables: [t; K_STENCIL],
-                at: [at; K_STENCIL],
+                tables: [t; K_STENCIL_EDGE],
+                at: [at; K_STENCIL_EDGE],
                 levels: t.levels_in(at),
                 n: 1,
                 weights,
@@ -162,21 +172,23 @@ impl MasterTables {
             return None;
         }
         let i = (1..n).find(|&i| ks[i] > k).map_or(n - 2, |i| i - 1);
-        // the interval i in the middle of the stencil, shifted inward at the ends
-        let width = n.min(K_STENCIL);
+        // the interval i in the middle of the stencil, shifted inward at the ends, one table
+        // more in the end intervals
+        let edge = i == 0 || i == n - 2;
+        let width = n.min(if edge { K_STENCIL_EDGE } else { K_STENCIL });
         let s = (i + 1).saturating_sub(width / 2).min(n - width);
         let first = self.table(s)?;
-        let mut tables = [first; K_STENCIL];
-        let mut at = [first.rows_at(y)?; K_STENCIL];
+        let mut tables = [first; K_STENCIL_EDGE];
+        let mut at = [first.rows_at(y)?; K_STENCIL_EDGE];
         let mut levels = Levels::UNBOUNDED;
-        let mut ln_k = [0.0; K_STENCIL];
+        let mut ln_k = [0.0; K_STENCIL_EDGE];
         for q in 0..width {
             tables[q] = self.table(s + q)?;
             at[q] = tables[q].rows_at(y)?;
             levels = levels.min(tables[q].levels_in(at[q]));
             ln_k[q] = ks[s + q].ln();
         }
-        let mut weights = [0.0; K_STENCIL];
+        let mut weights = [0.0; K_STENCIL_EDGE];
         for (q, w) in weights.iter_mut().enumerate().take(width) {
             *w = lagrange_weight(&ln_k[..width], q, k.ln());
         }

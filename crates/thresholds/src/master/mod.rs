@@ -28,7 +28,8 @@
 //!   the rounded 14.18 of V_stick,JKR). A query interpolates at its own distance to the end
 //!   (the end curves at its (y, k)): the local cubic in u on the four rows around y, the cubic
 //!   in y, then the quintic in ln k through the six tables around k (11 tables, k = 0.005
-//!   2^(i/3); `answer::K_STENCIL`).
+//!   2^(i/3); `answer::K_STENCIL`), the sextic through seven in the first and the last interval
+//!   of k (`answer::K_STENCIL_EDGE`).
 //! - **Vouching.** Every node is an exact search ([`build`]); every interval of a row, every
 //!   cell between rows and every interval between tables of neighbouring k was checked at its
 //!   midpoint, and the default search agrees with each node; the tables answer only where those
@@ -66,7 +67,7 @@ use format::EndsData;
 use std::sync::OnceLock;
 
 pub(crate) use answer::from_table;
-pub use answer::{K_STENCIL, TABLE_REL_TOL, V_MAX_MARGIN};
+pub use answer::{K_STENCIL, K_STENCIL_EDGE, TABLE_REL_TOL, V_MAX_MARGIN};
 pub use ends::{EndCurves, Ends};
 pub use file::{ends_to_text, table_to_text};
 pub use format::{FormatError, F_TOP};

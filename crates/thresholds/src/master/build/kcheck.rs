@@ -1,6 +1,6 @@
 //! The checks between tables of neighbouring k: in each k interval, at its middle k (a point of
 //! the end curves' grid), in each bin of y, the quintic in ln k through the six tables around it
-//! is compared with the exact search along the nodes of the nearest row, from far from the end
+//! (the sextic through seven in the first and the last interval) is compared with the exact search along the nodes of the nearest row, from far from the end
 //! towards it; the interval is vouched for in that bin down to the last distance that passed.
 
 use super::cells::SHEARED_REACH;
@@ -8,7 +8,7 @@ use super::{rel_diff, BuildConfig, Cache};
 use crate::master::binary::Table;
 use crate::master::ends::EndCurves;
 use crate::master::format::{CellData, EndsData, TableData};
-use crate::master::{Curve, MasterTables, K_STENCIL};
+use crate::master::{Curve, MasterTables, K_STENCIL, K_STENCIL_EDGE};
 use crate::ThresholdsError;
 use greenwood::CrackLaw;
 use numerics::format::number;
@@ -63,7 +63,7 @@ pub fn k_checks(
     // this check's description replaces an earlier one's
     out.header.retain(|h| !h.starts_with("k checks:"));
     out.header.push(format!(
-        "k checks: the polynomial in ln k through {K_STENCIL} tables, in each interval of k at its middle k, in y bins of {}, along every {CHECK_EVERY}nd node of the nearest row, to {}",
+        "k checks: the polynomial in ln k through {K_STENCIL} tables ({K_STENCIL_EDGE} in the first and last interval), in each interval of k at its middle k, in y bins of {}, along every {CHECK_EVERY}nd node of the nearest row, to {}",
         number(dy),
         number(cfg.tol)
     ));
