@@ -5,11 +5,12 @@
 //! 1. the end curves give x_s and x_on at (y, k) ([`super::ends`]); next to the kink where the
 //!    cliff changes regime, where they are not interpolated, only upper bounds of them, which
 //!    tell "beyond the end" (step 2) and nothing else;
-//! 2. F: for x >= x_s it exceeds [`F_TOP`](super::format::F_TOP); else each table of the k stencil (the table of k
-//!    itself, or the [`K_STENCIL`] tables around it in ln k, [`K_STENCIL_EDGE`] in the end
-//!    intervals) gives g = ln(F - 1) at (y, u = ln(x_s - x)) where vouched, and the polynomial
-//!    in ln k through them (quintic; sextic in the end intervals) combines them; closer to x_s than vouched, F is at least its value at the closest vouched
-//!    distance (the rows' ratios increase towards the end);
+//! 2. F: for x >= x_s it exceeds [`F_TOP`](super::format::F_TOP); else each table of the k
+//!    stencil (the table of k itself, or the [`K_STENCIL`] tables around it in ln k,
+//!    [`K_STENCIL_EDGE`] in the end intervals) gives g = ln(F - 1) at (y, u = ln(x_s - x))
+//!    where vouched, and the polynomial in ln k through them (quintic; sextic in the end
+//!    intervals) combines them; closer to x_s than vouched, F is at least its value at the
+//!    closest vouched distance (the rows' ratios increase towards the end);
 //! 3. F_on likewise, on the strip (w = ln(x_on - x)) for x within half a strip of x_s, on the
 //!    body elsewhere;
 //! 4. each ratio is compared with f_max: clearly below (an answer), clearly above (no

@@ -1,7 +1,8 @@
 //! The checks between tables of neighbouring k: in each k interval, at its middle k (a point of
 //! the end curves' grid), in each bin of y, the quintic in ln k through the six tables around it
-//! (the sextic through seven in the first and the last interval) is compared with the exact search along the nodes of the nearest row, from far from the end
-//! towards it; the interval is vouched for in that bin down to the last distance that passed.
+//! (the sextic through seven in the first and the last interval) is compared with the exact
+//! search along the nodes of the nearest row, from far from the end towards it; the interval is
+//! vouched for in that bin down to the last distance that passed.
 
 use super::cells::SHEARED_REACH;
 use super::{rel_diff, BuildConfig, Cache};
