@@ -204,32 +204,49 @@ impl MasterTables {
         })
     }
 
+    /// The k check of the stencil's interval at `y` (`Some(None)` at a table's own k), `None`
+    /// where the interval was not checked there.
+    fn check_of(&self, ks: &KStencil, y: f64) -> Option<Option<[f64; 5]>> {
+        match ks.interval {
+            Some(i) => self.k_check(i, y).map(Some),
+            None => Some(None),
+        }
+    }
+
+    /// Both ratios far inside the region vouched in plain x (by [`PLAIN_INSIDE`] in x), without
+    /// the end curves: the full answer ([`MasterTables::answer`]) gives the same there, bit for
+    /// bit (`far_inside_the_plain_region_the_answer_needs_no_ends`), and the end curves' bicubic
+    /// is a sixth of an answer that changes y at every point.
+    fn plain_inside(
+        &self,
+        ks: &KStencil,
+        x: f64,
+        y: f64,
+        f_max: f64,
+    ) -> Option<(Option<f64>, Option<f64>)> {
+        let check = self.check_of(ks, y)?;
+        let hi = plain_limit(ks, check, Curve::Stick)?;
+        let hi = hi.min(plain_limit(ks, check, Curve::OnsetBody)?);
+        if hi.is_nan() || x + PLAIN_INSIDE > hi {
+            return None;
+        }
+        let [s, o] = ks.plain_both(y, x)?;
+        both(side(Eval::Value(s), f_max), side(Eval::Value(o), f_max))
+    }
+
     /// `curve` at (x, y, k) from the stencil ([`super::table`]): plain where every table (and
     /// the k check) vouches for it at x, else sheared at the distance to the end where they do
     /// (this needs the end at (y, k)); closer to the end than vouched, at least the value at the
     /// closest vouched point, where the rows' ratios increase towards the end.
     fn eval(&self, ks: &KStencil, curve: Curve, x: f64, y: f64, end: Option<f64>) -> Eval {
-        let check = match ks.interval {
-            Some(i) => match self.k_check(i, y) {
-                Some(c) => Some(c),
-                None => return Eval::Unknown,
-            },
-            None => None,
+        let Some(check) = self.check_of(ks, y) else {
+            return Eval::Unknown;
         };
         // towards the end a ratio is at least its value at a point farther from it, up to the
         // level where the rows stop increasing
         let at_least = |g: f64| Eval::AtLeast(g.min((ks.levels.mono - 1.0).ln()));
         // plain: vouched up to x_hi
-        let plain = (curve != Curve::OnsetStrip)
-            .then(|| {
-                let v = usize::from(curve != Curve::Stick);
-                let mut hi = check.map_or(f64::INFINITY, |c| c[v]);
-                for (t, at) in ks.tables_at() {
-                    hi = hi.min(t.plain_limit_in(at, curve)?);
-                }
-                Some(hi)
-            })
-            .flatten();
+        let plain = plain_limit(ks, check, curve);
         let g_plain = |x: f64| {
             let v = usize::from(curve != Curve::Stick);
             ks.plain_both(y, x).map(|g| g[v])
@@ -318,8 +335,23 @@ impl MasterTables {
         if !(x.is_finite() && y.is_finite() && f_max > 0.0) {
             return None;
         }
-        let ends = self.ends().and_then(|e| e.at(y, k));
         let ks = self.k_stencil(k, y)?;
+        if let Some(answer) = self.plain_inside(&ks, x, y, f_max) {
+            return Some(answer);
+        }
+        self.answer_with_ends(&ks, x, y, k, f_max)
+    }
+
+    /// [`MasterTables::answer`] from the end curves at (y, k), wherever x lies.
+    fn answer_with_ends(
+        &self,
+        ks: &KStencil,
+        x: f64,
+        y: f64,
+        k: f64,
+        f_max: f64,
+    ) -> Option<(Option<f64>, Option<f64>)> {
+        let ends = self.ends().and_then(|e| e.at(y, k));
         let beyond = |end: Option<f64>| {
             // past its end a ratio exceeds the level up to which the rows were checked for no
             // bouncing beyond their ends (F_TOP for monotone rows); whether the rows increase
@@ -345,21 +377,47 @@ impl MasterTables {
         };
         let x_s = ends.map(|e| e.x_s);
         let stick = beyond(x_s.or(bound.map(|b| b.x_s)))
-            .unwrap_or_else(|| side(self.eval(&ks, Curve::Stick, x, y, x_s), f_max));
+            .unwrap_or_else(|| side(self.eval(ks, Curve::Stick, x, y, x_s), f_max));
         let onset = beyond(ends.or(bound).map(|e| e.x_on)).unwrap_or_else(|| {
             let on_strip = ends
                 .filter(|e| x > e.x_s - 0.5 * (e.x_on - e.x_s))
-                .map(|e| self.eval(&ks, Curve::OnsetStrip, x, y, Some(e.x_on)))
+                .map(|e| self.eval(ks, Curve::OnsetStrip, x, y, Some(e.x_on)))
                 .filter(|e| *e != Eval::Unknown);
-            let e = on_strip.unwrap_or_else(|| self.eval(&ks, Curve::OnsetBody, x, y, x_s));
+            let e = on_strip.unwrap_or_else(|| self.eval(ks, Curve::OnsetBody, x, y, x_s));
             side(e, f_max)
         });
-        match (stick, onset) {
-            (Side::Below(s), Side::Below(o)) => Some((Some(s), Some(o.min(s)))),
-            (Side::Above, Side::Below(o)) => Some((None, Some(o))),
-            (Side::Above, Side::Above) => Some((None, None)),
-            _ => None,
-        }
+        both(stick, onset)
+    }
+}
+
+/// Far inside the region vouched in plain x by this much (in x), the end curves are not needed:
+/// x lies below the end there (the vouched F is below F_TOP) by more than half the widest strip
+/// between x_s and x_on on the end curves' grid (x_on - x_s is at most 0.003:
+/// `the_strips_are_narrow`), so F_on is read on the body, as the full answer reads it.
+const PLAIN_INSIDE: f64 = 0.01;
+
+/// The plain limit of `curve` over the stencil's tables and the k check (x vouched up to it);
+/// `None` where a table has none (and for the strip, which has no plain form).
+fn plain_limit(ks: &KStencil, check: Option<[f64; 5]>, curve: Curve) -> Option<f64> {
+    if curve == Curve::OnsetStrip {
+        return None;
+    }
+    let v = usize::from(curve != Curve::Stick);
+    let mut hi = check.map_or(f64::INFINITY, |c| c[v]);
+    for (t, at) in ks.tables_at() {
+        hi = hi.min(t.plain_limit_in(at, curve)?);
+    }
+    Some(hi)
+}
+
+/// The answer from what the tables say of each ratio: both below the search limit, F above it
+/// (no bouncing below v_max) with F_on below or above; nothing otherwise.
+fn both(stick: Side, onset: Side) -> Option<(Option<f64>, Option<f64>)> {
+    match (stick, onset) {
+        (Side::Below(s), Side::Below(o)) => Some((Some(s), Some(o.min(s)))),
+        (Side::Above, Side::Below(o)) => Some((None, Some(o))),
+        (Side::Above, Side::Above) => Some((None, None)),
+        _ => None,
     }
 }
 
@@ -398,4 +456,70 @@ pub(crate) fn from_table(
         steps: 0,
         method: crate::ThresholdMethod::Table,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A uniform number in [0, 1) from a 64-bit LCG (Knuth's constants).
+    fn uniform(state: &mut u64) -> f64 {
+        *state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (*state >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// Far inside the region vouched in plain x the answer without the end curves
+    /// ([`MasterTables::plain_inside`]) is the full answer's, bit for bit: 4e4 random points of
+    /// the tables' domain (x from -17 to 3, y from -6 to 5.5, k log-uniform over the tables' range
+    /// and at the tables' own k, f_max from 2 to 2e4), a third of them taking the short way.
+    #[test]
+    fn far_inside_the_plain_region_the_answer_needs_no_ends() {
+        let t = MasterTables::standard();
+        let (k0, k1) = t.k_range();
+        let mut state = 7;
+        let (mut inside, n) = (0, 40_000);
+        for i in 0..n {
+            let x = -17.0 + 20.0 * uniform(&mut state);
+            let y = -6.0 + 11.5 * uniform(&mut state);
+            let k = if i % 4 == 0 {
+                t.table_k()[i / 4 % t.table_k().len()]
+            } else {
+                k0 * (k1 / k0).powf(uniform(&mut state))
+            };
+            let f_max = 2.0 * 1e4f64.powf(uniform(&mut state));
+            let Some(ks) = t.k_stencil(k, y) else {
+                continue;
+            };
+            let full = t.answer_with_ends(&ks, x, y, k, f_max);
+            if let Some(short) = t.plain_inside(&ks, x, y, f_max) {
+                inside += 1;
+                assert_eq!(
+                    Some(short),
+                    full,
+                    "x = {x}, y = {y}, k = {k}, f_max = {f_max}"
+                );
+            }
+            assert_eq!(t.answer(x, y, k, f_max), full);
+        }
+        assert!(inside * 3 >= n, "{inside} of {n} inside");
+    }
+
+    /// The strips between x_s and x_on are narrow on the whole grid of the end curves (at most
+    /// 0.003 in x), so that [`PLAIN_INSIDE`] keeps a point far inside the plain region more than
+    /// half a strip below x_s, where the full answer reads F_on on the body.
+    #[test]
+    fn the_strips_are_narrow() {
+        let ends = MasterTables::standard().ends().expect("embedded");
+        let d = ends.data();
+        let widest = d
+            .x_s
+            .iter()
+            .zip(d.x_on.iter())
+            .map(|(s, o)| o - s)
+            .filter(|w| w.is_finite())
+            .fold(0.0, f64::max);
+        assert!(widest < 0.004 && 0.5 * widest < PLAIN_INSIDE, "{widest}");
+    }
 }
