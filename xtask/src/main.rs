@@ -21,8 +21,8 @@ struct Cli {
 
 #[derive(Debug, Subcommand)]
 enum Command {
-    /// Compute Figures 1-7 and the sphere-on-wall figure; write data/fig*.csv and
-    /// docs/figures/fig*.svg.
+    /// Compute Figures 1-7, the sphere-on-wall figure and the master figure; write
+    /// data/fig*.csv and docs/figures/fig*.svg.
     Figures {
         /// Recompute and compare with the committed data/fig*.csv (relative tolerance 1e-4)
         /// instead of writing.

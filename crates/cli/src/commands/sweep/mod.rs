@@ -208,7 +208,8 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
     });
     progress.finish();
     outcome?;
-    let mut r = Report::new(format!("Sweep of {total} points into {}", path.display()));
+    let points = if total == 1 { "point" } else { "points" };
+    let mut r = Report::new(format!("Sweep of {total} {points} into {}", path.display()));
     r.count("points", total);
     r.count("computed", total - done);
     r.count("resumed", done);
