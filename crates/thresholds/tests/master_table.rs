@@ -173,8 +173,8 @@ fn the_first_cells_agree_with_the_search() {
 /// The lowest cells (y = -6 to -5.5: large soft grains at the shortest T_vis), checked since
 /// 2026-11-27 in every table (those of k = 0.01, 0.0126 and 0.02 had rows there that were never
 /// checked, so no k between tables was answered there): at random points of those y, random k
-/// and x from -12 to -1, the tables answer at least three quarters, each within 1e-5 of the exact search
-/// ([`checked_table_answer`]).
+/// and x from -12 to -1, the tables answer at least three quarters, each within 1e-5 of the
+/// exact search ([`checked_table_answer`]).
 #[test]
 fn the_lowest_cells_agree_with_the_search() {
     let mut rng = Rng(23);
@@ -195,7 +195,7 @@ fn the_lowest_cells_agree_with_the_search() {
 /// (`K_STENCIL_EDGE`): at points where the quintic through six missed the exact search by up
 /// to 2.6e-6 (so the k checks refused it), the tables now answer, within 1e-5 of the exact
 /// search ([`checked_table_answer`]). The points: the ones `examples/table_accuracy.rs` listed
-/// as declined before (2026-11-27), F = 17 to 700.
+/// as declined before (2026-11-27), F = 17 to 720.
 #[test]
 fn the_end_intervals_of_k_agree_with_the_search() {
     let points = [
