@@ -7,10 +7,11 @@
 mod args;
 mod commands;
 mod error;
+mod hyphen;
 mod output;
 mod progress;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
 use std::process::ExitCode;
 
 /// Sticking, bouncing and fragmentation of colliding viscoelastic grains: two spheres (equal or
@@ -64,7 +65,14 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let argv: Vec<std::ffi::OsString> = std::env::args_os().collect();
+    let cli = match Cli::try_parse_from(&argv) {
+        Ok(cli) => cli,
+        // a flag taken as the value of the option before it explains a failure better
+        Err(e) => hyphen::flag_as_value(&mut Cli::command(), &argv)
+            .unwrap_or(e)
+            .exit(),
+    };
     let result = match &cli.command {
         Command::CrackLaw(a) => commands::crack_law::run(a),
         Command::Material(a) => commands::material::run(a),
@@ -89,7 +97,7 @@ fn main() -> ExitCode {
 
 #[cfg(test)]
 mod tests {
-    use clap::CommandFactory;
+    use super::CommandFactory;
 
     /// clap's own consistency checks of every subcommand (unique names, conflicts that exist).
     #[test]
