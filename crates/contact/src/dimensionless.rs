@@ -50,11 +50,17 @@ impl Contact {
     /// # Ok::<(), contact::ContactError>(())
     /// ```
     pub fn dimensionless(&self, t_vis: f64) -> Dimensionless {
-        let (a_eq, t0) = (self.a_eq(), self.t0());
         Dimensionless {
-            c_d: 2.0 * self.drag_time(t_vis) * self.e_star() * a_eq * t0 / self.m_star(),
-            c_a: self.crack_speed_unit(t_vis) * t0 / a_eq,
+            c_d: self.drag_number(t_vis),
+            c_a: self.crack_speed_unit(t_vis) * self.t0() / self.a_eq(),
         }
+    }
+
+    /// The drag number c_D of [`Contact::dimensionless`] alone (dimensionless), for relaxation
+    /// time `t_vis` (s): what the master tables need besides c_D c_a
+    /// ([`Contact::drag_crack_product`]).
+    pub fn drag_number(&self, t_vis: f64) -> f64 {
+        2.0 * self.drag_time(t_vis) * self.e_star() * self.a_eq() * self.t0() / self.m_star()
     }
 
     /// The product c_D c_a of [`Contact::dimensionless`] (dimensionless), which does not depend

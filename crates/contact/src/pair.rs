@@ -300,15 +300,28 @@ impl Contact {
             .into_iter()
             .chain(r2.and_then(|r2| Warning::for_radius("radius2", r2)))
             .collect();
-        // mu < TABOR_MIN tested as mu^3 eps^3 = R gamma^2 / E*^2 < (TABOR_MIN eps)^3: without
-        // the cube root, which an array of a million contacts from Python would pay each time
-        let (g, e) = (self.gamma(), self.e_star());
-        if self.reduced_radius() * g * g / (e * e) < (TABOR_MIN * self.epsilon).powi(3) {
+        if self.tabor_below_min() {
             out.push(Warning::JkrOutsideValidity {
                 tabor: self.tabor(),
             });
         }
         out
+    }
+
+    /// Whether [`Contact::warnings`] has any, without building them: an array of a million
+    /// contacts from Python asks it of each (150 instructions an element, callgrind).
+    pub fn has_warnings(&self) -> bool {
+        let r2 = self.geometry.r2().filter(|&r2| r2 != self.r1());
+        Warning::for_radius("radius", self.r1()).is_some()
+            || r2.is_some_and(|r2| Warning::for_radius("radius2", r2).is_some())
+            || self.tabor_below_min()
+    }
+
+    /// Whether the Tabor parameter is below [`TABOR_MIN`], tested as mu^3 eps^3 = R gamma^2 /
+    /// E*^2 < (TABOR_MIN eps)^3: without the cube root of [`Contact::tabor`].
+    fn tabor_below_min(&self) -> bool {
+        let (g, e) = (self.gamma(), self.e_star());
+        self.reduced_radius() * g * g / (e * e) < (TABOR_MIN * self.epsilon).powi(3)
     }
 
     /// Pull-off force F_crit = 3 pi gamma R / 2 (N) (Section 6).

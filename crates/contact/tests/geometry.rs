@@ -142,6 +142,26 @@ fn implausible_radius_warns() {
     assert_eq!(co2(Geometry::spheres(60.0, 60.0)).warnings().len(), 1);
     assert!(Warning::for_speed("v_in", 2e3).is_some());
     assert!(Warning::for_speed("v_in", 20.0).is_none());
+    // has_warnings (no list built) says the same as the list, on every case above and across
+    // the radii and the Tabor limit (mu = TABOR_MIN near R1 = 20 nm for CO2)
+    let geometries = |r: f64| {
+        [
+            Geometry::identical(r),
+            Geometry::spheres(r, 30.0),
+            Geometry::spheres(60e-6, r),
+            Geometry::wall(r),
+        ]
+    };
+    let mut warned = 0;
+    for i in 0..=60 {
+        let r = 10f64.powf(-10.0 + 0.15 * i as f64);
+        for g in geometries(r) {
+            let c = co2(g);
+            assert_eq!(c.has_warnings(), !c.warnings().is_empty(), "{g:?}");
+            warned += usize::from(c.has_warnings());
+        }
+    }
+    assert!(warned > 40 && warned < 240, "{warned}");
 }
 
 /// Valid constants can still overflow: a radius of 1e300 m has an infinite mass, which no

@@ -154,7 +154,7 @@ impl<'a> Elements<'a> {
             }
         }
         let c = Contact::new(m, g).map_err(|e| Error::from_contact(e, i))?;
-        let warns = !c.warnings().is_empty();
+        let warns = c.has_warnings();
         LAST_CONTACT.with(|last| last.set(Some((m, g, c, warns))));
         Ok((c, warns))
     }

@@ -153,7 +153,8 @@ impl MasterTables {
     /// around y (nothing is vouched for there).
     fn k_stencil(&self, k: f64, y: f64) -> Option<KStencil<'_>> {
         let ks = self.table_k();
-        if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
+        // |k/t - 1| < SAME_K without a division a table
+        if let Some(i) = ks.iter().position(|&t| (k - t).abs() < SAME_K * t) {
             let t = self.table(i)?;
             let at = t.rows_at(y)?;
             let mut weights = [0.0; K_STENCIL_EDGE];
@@ -439,7 +440,7 @@ pub(crate) fn from_table(
     if opts.rel_tol < TABLE_REL_TOL && opts.rel_tol != crate::DEFAULT_REL_TOL {
         return None;
     }
-    let c_d = contact.dimensionless(t_vis).c_d;
+    let c_d = contact.drag_number(t_vis);
     let v_jkr = contact.v_stick_jkr();
     let v_max = opts.v_max_for(v_jkr);
     // y from the product c_D c_a, not from c_D and c_a: the same bits at every T_vis of the
