@@ -309,7 +309,8 @@ impl Contact {
     }
 
     /// Whether [`Contact::warnings`] has any, without building them: an array of a million
-    /// contacts from Python asks it of each (45 instructions an element instead of 150, callgrind).
+    /// contacts from Python asks it of each (45 instructions an element instead of 150,
+    /// callgrind).
     pub fn has_warnings(&self) -> bool {
         let r2 = self.geometry.r2().filter(|&r2| r2 != self.r1());
         Warning::for_radius("radius", self.r1()).is_some()
