@@ -29,8 +29,14 @@ pub fn flag_as_value(cmd: &mut Command, argv: &[OsString]) -> Option<clap::Error
     let message = args[at + 1..].windows(2).find_map(|w| {
         let name = w[0].strip_prefix("--")?;
         (takes_value.iter().any(|f| f == name) && is_flag(w[1])).then(|| {
+            // spelt as clap's own message for a value left out at the end: '--radius <RADIUS>'
+            let value = sub
+                .get_arguments()
+                .find(|a| a.get_long() == Some(name))
+                .and_then(|a| a.get_value_names()?.first().map(|v| v.to_string()))
+                .unwrap_or_else(|| name.to_uppercase().replace('-', "_"));
             format!(
-                "a value is required for '--{name}' but none was supplied (found the flag '{}')",
+                "a value is required for '--{name} <{value}>' but none was supplied (found the flag '{}')",
                 w[1]
             )
         })
@@ -61,9 +67,15 @@ mod tests {
     #[test]
     fn a_flag_in_place_of_a_value_is_named() {
         let e = error_for("stickiness v-stick --radius --t-vis 1e-9").expect("an error");
-        assert!(e.contains("'--radius'") && e.contains("'--t-vis'"), "{e}");
+        assert!(
+            e.contains("'--radius <RADIUS>'") && e.contains("'--t-vis'"),
+            "{e}"
+        );
         let e = error_for("stickiness --json collide --t-vis --v-in=0.1").expect("an error");
-        assert!(e.contains("'--t-vis'") && e.contains("'--v-in=0.1'"), "{e}");
+        assert!(
+            e.contains("'--t-vis <T_VIS>'") && e.contains("'--v-in=0.1'"),
+            "{e}"
+        );
         assert_eq!(
             error_for("stickiness v-stick --radius -1e-6 --t-vis 1e-9"),
             None
