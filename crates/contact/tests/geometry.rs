@@ -143,7 +143,7 @@ fn implausible_radius_warns() {
     assert!(Warning::for_speed("v_in", 2e3).is_some());
     assert!(Warning::for_speed("v_in", 20.0).is_none());
     // has_warnings (no list built) says the same as the list, on every case above and across
-    // the radii and the Tabor limit (mu = TABOR_MIN near R1 = 20 nm for CO2)
+    // the radii and the Tabor limit (mu = TABOR_MIN = 1 near R1 = 70 nm for CO2: 9.5 at 60 um)
     let geometries = |r: f64| {
         [
             Geometry::identical(r),
