@@ -173,8 +173,8 @@ fn kill_and_resume_gives_the_same_bytes() {
     );
 }
 
-/// --resume drops a torn last line; an existing file needs --resume or --force; a file of
-/// another sweep is refused; bad axes exit 2 naming the flag before any file is written.
+/// --resume drops a torn last line and starts again a file whose header was cut short; an
+/// existing file needs --resume or --force; a file of another sweep is refused; bad axes exit 2 naming the flag before any file is written.
 #[test]
 fn file_contract() {
     let d = dir("contract");
@@ -189,6 +189,18 @@ fn file_contract() {
     let (code, _, err) = sweep(&[&SMALL[..], &["--resume"]].concat(), &out);
     assert_eq!(code, 0, "{err}");
     assert_eq!(std::fs::read_to_string(&out).unwrap(), whole);
+    // a kill before the header was complete (here: cut in its first line, and empty) holds no
+    // rows: --resume starts it again and ends with the whole file
+    for cut in [20, 0] {
+        std::fs::write(&out, &whole[..cut]).unwrap();
+        let (code, _, err) = sweep(&[&SMALL[..], &["--resume"]].concat(), &out);
+        assert_eq!(code, 0, "cut at {cut}: {err}");
+        assert_eq!(
+            std::fs::read_to_string(&out).unwrap(),
+            whole,
+            "cut at {cut}"
+        );
+    }
     let (code, _, err) = sweep(&SMALL, &out);
     assert_eq!(code, 2);
     assert!(err.contains("--resume") && err.contains("--force"), "{err}");

@@ -19,12 +19,16 @@ pub struct Written {
     /// The complete rows (lines without their line break), in grid order.
     pub rows: Vec<String>,
     /// The length (bytes) of the file up to its last complete row: a torn last line (a kill
-    /// mid-write) lies beyond it and is to be cut off.
+    /// mid-write) lies beyond it and is to be cut off. 0 when not even the header is complete.
     pub complete_len: usize,
 }
 
 /// The complete rows of the file `text` if it holds the sweep whose header is `header` (as
 /// [`super::header_text`] writes it); `None` if it holds another sweep.
+///
+/// A file killed before its header was complete (empty, or a beginning of `header`) holds no
+/// rows of any sweep: it is this sweep's with no rows and `complete_len` 0 (the header is to
+/// be written again).
 ///
 /// # Example
 /// ```
@@ -33,8 +37,16 @@ pub struct Written {
 /// assert_eq!(w.rows, ["row 1", "row 2"]);
 /// assert_eq!(w.complete_len, "# h\nrow 1\nrow 2\n".len()); // the torn "row" is cut off
 /// assert!(written_rows("# other\n", "# h\n").is_none());
+/// // killed while writing the header
+/// assert_eq!(written_rows("# ", "# h\n").unwrap().complete_len, 0);
 /// ```
 pub fn written_rows(text: &str, header: &str) -> Option<Written> {
+    if text.len() < header.len() && header.starts_with(text) {
+        return Some(Written {
+            rows: Vec::new(),
+            complete_len: 0,
+        });
+    }
     let rest = text.strip_prefix(header)?;
     let complete = rest.rfind('\n').map_or(0, |i| i + 1);
     Some(Written {

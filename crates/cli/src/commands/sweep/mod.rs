@@ -100,10 +100,10 @@ fn sample(len: usize, n: usize) -> Vec<usize> {
     all
 }
 
-/// The file ready for appending: a fresh one holding the header, or the kept one with its torn
-/// last line cut off.
+/// The file ready for appending: a fresh one holding the header (also when a kill left the
+/// header incomplete), or the kept one with its torn last line cut off.
 fn prepare(path: &Path, header: &str, written: Option<&Written>) -> Result<(), CliError> {
-    let Some(w) = written else {
+    let Some(w) = written.filter(|w| w.complete_len >= header.len()) else {
         return std::fs::write(path, header).map_err(|e| {
             CliError::Usage(format!(
                 "--out {}: cannot write the file: {e}",
