@@ -143,7 +143,7 @@ impl<'a> Elements<'a> {
     /// `i` has the same inputs (a scalar radius broadcast over T_vis, a sampler's walkers at one
     /// radius): a contact costs a third of a table answer, asking for its warnings a twentieth.
     pub fn contact(&self, i: usize) -> Result<(Contact, bool), Error> {
-        let mut m = self.material.inner;
+        let mut m = self.material.inner();
         if let Some(g) = self.gamma_sv {
             m.gamma_sv = g[i];
         }

@@ -43,7 +43,29 @@ use std::path::PathBuf;
 #[pyclass(frozen, module = "stickiness", name = "Material", from_py_object)]
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Material {
-    pub(crate) inner: thresholds::Material,
+    /// Surface free energy gamma_SV (J/m^2).
+    #[pyo3(get)]
+    gamma_sv: f64,
+    /// Young's modulus E (Pa).
+    #[pyo3(get)]
+    young: f64,
+    /// Poisson ratio nu (dimensionless).
+    #[pyo3(get)]
+    poisson: f64,
+    /// Density rho (kg/m^3).
+    #[pyo3(get)]
+    density: f64,
+}
+
+impl From<thresholds::Material> for Material {
+    fn from(m: thresholds::Material) -> Self {
+        Self {
+            gamma_sv: m.gamma_sv,
+            young: m.young,
+            poisson: m.poisson,
+            density: m.density,
+        }
+    }
 }
 
 /// `value` in SI: a number, or an `astropy.units.Quantity` converted to `unit` (astropy's
@@ -86,9 +108,19 @@ fn si_option(value: Option<&Bound<'_, PyAny>>, name: &str, unit: &str) -> PyResu
 }
 
 impl Material {
+    /// The library's material (SI).
+    pub(crate) fn inner(&self) -> thresholds::Material {
+        thresholds::Material {
+            gamma_sv: self.gamma_sv,
+            young: self.young,
+            poisson: self.poisson,
+            density: self.density,
+        }
+    }
+
     fn checked(inner: thresholds::Material) -> PyResult<Self> {
         inner.validate().map_err(|e| value_error(&e))?;
-        Ok(Self { inner })
+        Ok(inner.into())
     }
 }
 
@@ -118,9 +150,7 @@ impl Material {
     /// Material
     #[staticmethod]
     fn co2() -> Self {
-        Self {
-            inner: thresholds::Material::co2(),
-        }
+        thresholds::Material::co2().into()
     }
 
     /// H2O ice (Sections 3, 5.2): gamma_SV = 0.1 J/m^2, E = 7 GPa, nu = 0.25, rho = 930 kg/m^3.
@@ -130,9 +160,7 @@ impl Material {
     /// Material
     #[staticmethod]
     fn h2o() -> Self {
-        Self {
-            inner: thresholds::Material::h2o(),
-        }
+        thresholds::Material::h2o().into()
     }
 
     /// A preset by name or a material file.
@@ -153,7 +181,7 @@ impl Material {
     #[staticmethod]
     fn named(name: &str) -> PyResult<Self> {
         thresholds::Material::from_name_or_path(name)
-            .map(|inner| Self { inner })
+            .map(Self::from)
             .map_err(|e| Error::from_contact(e, 0).into())
     }
 
@@ -177,7 +205,7 @@ impl Material {
     #[staticmethod]
     fn from_json(path: PathBuf) -> PyResult<Self> {
         thresholds::Material::from_json_file(&path)
-            .map(|inner| Self { inner })
+            .map(Self::from)
             .map_err(|e| Error::from_contact(e, 0).into())
     }
 
@@ -205,7 +233,7 @@ impl Material {
         poisson: Option<&Bound<'_, PyAny>>,
         density: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
-        let m = self.inner;
+        let m = self.inner();
         Self::checked(thresholds::Material {
             gamma_sv: si_option(gamma_sv, "gamma_sv", "J/m2")?.unwrap_or(m.gamma_sv),
             young: si_option(young, "young", "Pa")?.unwrap_or(m.young),
@@ -214,33 +242,9 @@ impl Material {
         })
     }
 
-    /// Surface free energy gamma_SV (J/m^2).
-    #[getter]
-    fn gamma_sv(&self) -> f64 {
-        self.inner.gamma_sv
-    }
-
-    /// Young's modulus E (Pa).
-    #[getter]
-    fn young(&self) -> f64 {
-        self.inner.young
-    }
-
-    /// Poisson ratio nu (dimensionless).
-    #[getter]
-    fn poisson(&self) -> f64 {
-        self.inner.poisson
-    }
-
-    /// Density rho (kg/m^3).
-    #[getter]
-    fn density(&self) -> f64 {
-        self.inner.density
-    }
-
     fn __repr__(&self) -> String {
         use numerics::format::number;
-        let m = &self.inner;
+        let m = self;
         format!(
             "Material(gamma_sv={}, young={}, poisson={}, density={})",
             number(m.gamma_sv),
@@ -253,11 +257,11 @@ impl Material {
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
         other
             .cast::<Material>()
-            .is_ok_and(|o| o.get().inner == self.inner)
+            .is_ok_and(|o| o.get() == self)
     }
 
     fn __hash__(&self) -> u64 {
-        let m = &self.inner;
+        let m = self;
         [m.gamma_sv, m.young, m.poisson, m.density]
             .iter()
             .fold(0xcbf2_9ce4_8422_2325u64, |h, x| {
@@ -266,7 +270,7 @@ impl Material {
     }
 
     fn __reduce__<'py>(&self, py: Python<'py>) -> (Bound<'py, PyType>, (f64, f64, f64, f64)) {
-        let m = &self.inner;
+        let m = self;
         (
             py.get_type::<Material>(),
             (m.gamma_sv, m.young, m.poisson, m.density),

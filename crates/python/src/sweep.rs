@@ -53,7 +53,7 @@ pub fn sweep<'py>(
             .into_iter()
             .map(|(name, m)| NamedMaterial {
                 name,
-                material: m.inner,
+                material: m.inner(),
             })
             .collect(),
         gamma_sv,
