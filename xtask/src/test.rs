@@ -4,7 +4,8 @@
 //! 1. `cargo test --workspace` (which also builds the `stickiness` binary), then
 //!    `cargo xtask master-table --check` and `cargo xtask restitution-table --check` (a sample
 //!    of the tables' values recomputed);
-//! 2. a virtual environment under `target/venv` with the Python test dependencies;
+//! 2. a virtual environment under `target/venv` with the Python test dependencies (made in a
+//!    thread while step 1 runs, with DustPy and the site's Sphinx tools);
 //! 3. the package as users install it: its wheel (`cargo xtask wheel`, here on the workspace's
 //!    opt-level-3 dev profile, so that it reuses the build of step 1), installed into it;
 //! 4. DustPy for the coupling tests: its PyPI release is a source distribution built with
@@ -113,30 +114,55 @@ fn shown(cmd: &Command) -> String {
         .join(" ")
 }
 
-/// Runs the requested parts from the workspace `root`.
+/// Runs the requested parts from the workspace `root`. The Python environment (downloads,
+/// DustPy's Fortran build) is made while the Rust tests run: most of it waits on the network.
 pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
+    std::thread::scope(|s| {
+        let environment = parts.python.then(|| s.spawn(|| python_environment(root)));
+        if parts.rust {
+            rust_tests(root)?;
+        }
+        let Some(environment) = environment else {
+            return Ok(());
+        };
+        let venv = environment
+            .join()
+            .map_err(|_| "making the Python environment panicked")??;
+        python_tests(root, &venv)
+    })
+}
+
+/// `cargo test --workspace`, then the master and restitution tables' checks.
+fn rust_tests(root: &Path) -> Result<(), Error> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    if parts.rust {
-        run(Command::new(&cargo)
-            .current_dir(root)
-            .args(["test", "--workspace"]))?;
-        // a change of the model must not leave the committed master tables stale
-        eprintln!("+ cargo xtask master-table --check");
-        crate::master_table::run_check(root)?;
-        eprintln!("+ cargo xtask restitution-table --check");
-        crate::restitution_table::run_check(root)?;
-    }
-    if !parts.python {
-        return Ok(());
-    }
-    // the CLI for the identity tests (already built by `cargo test`; quick otherwise)
     run(Command::new(&cargo)
         .current_dir(root)
-        .args(["build", "-p", "cli"]))?;
+        .args(["test", "--workspace"]))?;
+    // a change of the model must not leave the committed master tables stale
+    eprintln!("+ cargo xtask master-table --check");
+    crate::master_table::run_check(root)?;
+    eprintln!("+ cargo xtask restitution-table --check");
+    crate::restitution_table::run_check(root)
+}
+
+/// The virtual environment with the test requirements, DustPy and the site's builders.
+fn python_environment(root: &Path) -> Result<Venv, Error> {
     let venv = Venv::open(root)?;
     venv.pip(root, PYTHON_TEST_REQUIREMENTS)?;
     ensure_gfortran()?;
     venv.pip(root, &[DUSTPY])?;
+    // the site's builders too (the docs step finds them installed)
+    venv.pip(root, crate::docs::DOCS_REQUIREMENTS)?;
+    Ok(venv)
+}
+
+/// The wheel installed into `venv`, pytest, the docstrings' examples and the site.
+fn python_tests(root: &Path, venv: &Venv) -> Result<(), Error> {
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    // the CLI for the identity tests (already built by `cargo test`; quick otherwise)
+    run(Command::new(&cargo)
+        .current_dir(root)
+        .args(["build", "-p", "cli"]))?;
     // the package as users install it: the wheel, built on the dev profile (opt-level 3) so
     // that it shares the build of step 1 (`cargo xtask wheel` builds the release one)
     let wheel = crate::wheel::build(root, "dev")?;

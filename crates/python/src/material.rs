@@ -255,9 +255,7 @@ impl Material {
     }
 
     fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
-        other
-            .cast::<Material>()
-            .is_ok_and(|o| o.get() == self)
+        other.cast::<Material>().is_ok_and(|o| o.get() == self)
     }
 
     fn __hash__(&self) -> u64 {
