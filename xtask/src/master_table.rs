@@ -20,16 +20,16 @@ use thresholds::master::build::BuildConfig;
 use thresholds::master::format::{parse_ends, parse_table, EndsData, TableData};
 use thresholds::master::{ends_to_text, table_to_text};
 
-/// `--check` recomputes every this-many-th node of each table (110-160 of its 48 000-67 000
+/// `--check` recomputes every this-many-th node of each table (95-135 of its 48 000-67 000
 /// values): a change of the model moves them all, so a sample finds it. 250 (190-270 a table)
-/// took 60 s of the 147 s of `--check` once the tables had grown; this keeps `cargo xtask
-/// test` within 7 minutes on a fresh clone.
-pub const CHECK_EVERY: usize = 420;
+/// took 60 s of the 147 s of `--check` once the tables had grown; this and
+/// [`CHECK_LEVELS_EVERY`] keep `cargo xtask test` within 7 minutes on a fresh clone.
+pub const CHECK_EVERY: usize = 500;
 
-/// `--check` checks beyond their ends every this-many-th row that is not monotone (29 of the
-/// 340 rows of the eleven tables, 12 searches each, up to F = F_TOP: the costly ones; every
-/// 4th, 85 rows, took 85 s).
-pub const CHECK_LEVELS_EVERY: usize = 12;
+/// `--check` checks beyond their ends every this-many-th row that is not monotone in each table
+/// (about 25 of the 340 rows of the eleven tables, 12 searches each, up to F = F_TOP: the costly
+/// ones; every 4th, 85 rows, took 85 s).
+pub const CHECK_LEVELS_EVERY: usize = 16;
 
 /// `--check` recomputes every this-many-th point of the end curves (about 40 of 33 000).
 pub const CHECK_ENDS_EVERY: usize = 800;
