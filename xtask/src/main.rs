@@ -90,6 +90,11 @@ enum Command {
         /// cells apart (a double-collision miss next to the onset no longer refuses bouncing).
         #[arg(long, conflicts_with_all = ["check", "k_cells", "refine"])]
         recheck: bool,
+        /// Rebuild the rows of the committed tables (or those of `--only`) whose nodes were
+        /// built without thresholds where the master tables now vouch for them (the rows below
+        /// y = -4.5 of most k); run `--k-cells` after.
+        #[arg(long, conflicts_with_all = ["check", "k_cells", "refine", "recheck"])]
+        refill: bool,
     },
     /// Build the Python package's wheel (maturin, PyO3's stable ABI: one wheel for every
     /// CPython 3.9 or newer on this platform, checked for manylinux compliance) into
@@ -128,6 +133,9 @@ fn main() -> ExitCode {
         Command::RestitutionTable {
             refine: true, only, ..
         } => xtask::restitution_table::run_refine(&workspace_root(), &only),
+        Command::RestitutionTable {
+            refill: true, only, ..
+        } => xtask::restitution_table::run_refill(&workspace_root(), &only),
         Command::RestitutionTable {
             recheck: true,
             only,

@@ -1,11 +1,12 @@
 //! `cargo xtask restitution-table [--check | --only I,.. | --k-cells | --refine --only I,.. |
-//! --recheck [--only I,..]]`:
+//! --recheck [--only I,..] | --refill [--only I,..]]`:
 //! build the restitution tables (V_out and e of single collisions over the dimensionless numbers, k and the impact speed) from the ODE and
 //! write them to `crates/thresholds/data/restitution_k<k>.csv`, or recompute a sample of their
 //! values and fail if the model no longer gives them. They stand on the committed master
 //! tables (V_stick and V_double_onset at every node), so build those first. `--refine` adds
 //! rows to committed tables where their cells fail between rows
-//! ([`thresholds::restitution::refine`]); run `--k-cells` after it.
+//! ([`thresholds::restitution::refine`]), `--refill` rebuilds the rows built without thresholds
+//! where the master tables now have them; run `--k-cells` after either.
 
 use crate::figures::Error;
 use crate::master_table::{committed_ends, data_dir};
@@ -16,7 +17,7 @@ use thresholds::master::build::grid_k;
 use thresholds::restitution::build::{build_table, ratios, BuildConfig};
 use thresholds::restitution::check::k_cells;
 use thresholds::restitution::format::{parse, TableData};
-use thresholds::restitution::refine::{recheck_table, refine_table};
+use thresholds::restitution::refine::{recheck_table, refill_table, refine_table};
 use thresholds::restitution::to_text;
 use thresholds::{CrackLaw, MasterTables};
 
@@ -109,6 +110,33 @@ pub fn run_refine(root: &Path, only: &[usize]) -> Result<(), Error> {
             "k = {k}: {added} rows added; wrote {}",
             table_path(root, t.k).display()
         ));
+    }
+    Ok(())
+}
+
+/// Rebuilds the rows of the committed tables (or `only` these indices) whose nodes had no
+/// thresholds where the master tables now vouch for them, and writes them; their k cells are
+/// cleared (run `--k-cells` after).
+pub fn run_refill(root: &Path, only: &[usize]) -> Result<(), Error> {
+    let start = Instant::now();
+    let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
+    let (cfg, ends, masters) = (
+        BuildConfig::standard(),
+        committed_ends(root)?,
+        MasterTables::standard(),
+    );
+    require_masters(masters)?;
+    for mut t in committed(root)? {
+        let i =
+            (0..BuildConfig::TABLES).find(|&i| (grid_k(ends.k0, 3, i) / t.k - 1.0).abs() < 1e-9);
+        if !only.is_empty() && !i.is_some_and(|i| only.contains(&i)) {
+            continue;
+        }
+        let rows = refill_table(&cfg, &mut t, masters, &progress)?;
+        if rows > 0 {
+            std::fs::write(table_path(root, t.k), to_text(&t))?;
+        }
+        progress(&format!("k = {}: {rows} rows rebuilt", t.k));
     }
     Ok(())
 }

@@ -9,8 +9,11 @@
 //! and H2O of 20-200 um, T_vis 1e-11 - 3e-9 s): a fifth of their collisions went to the ODE.
 //! A row halfway between two rows whose cells fail divides that miss by about sixteen; the
 //! cells whose four-row stencil the new row enters are checked again.
+//!
+//! [`refill_table`] rebuilds the rows whose nodes were built without thresholds (the master
+//! tables did not vouch there then, and do now).
 
-use super::build::{build_row, BuildConfig};
+use super::build::{build_row, ratios, BuildConfig};
 use super::check::check_cells;
 use super::format::{RowData, TableData};
 use super::CLIFF_MARGIN;
@@ -110,6 +113,57 @@ pub fn refine_table(
         ));
     }
     Ok(added)
+}
+
+/// Rebuilds the rows of `table` that hold a node without thresholds where the master tables now
+/// vouch for them, and checks again the cells whose stencil holds a rebuilt row; returns the
+/// number of rows rebuilt. A node stands on the master tables' F and F_on: the tables built
+/// before the master tables had rows below y = -4.5 (most k) have no value at any node there,
+/// and the four-row stencils reaching down to them refuse answers up to y = -4.25. The rows
+/// keep their y and end x_s; the k cells are cleared (`--k-cells` computes them again).
+pub fn refill_table(
+    cfg: &BuildConfig,
+    table: &mut TableData,
+    masters: &MasterTables,
+    progress: &(dyn Fn(&str) + Sync),
+) -> Result<usize, ThresholdsError> {
+    let law = CrackLaw::new(table.k)?;
+    let k = table.k;
+    let stale_rows: Vec<usize> = (0..table.rows.len())
+        .filter(|&j| {
+            let r = &table.rows[j];
+            r.nodes
+                .iter()
+                .any(|p| !p.f.is_finite() && ratios(masters, p.x, r.y, k).is_some())
+        })
+        .collect();
+    for &j in &stale_rows {
+        let (y, x_s) = (table.rows[j].y, table.rows[j].x_s);
+        table.rows[j] = build_row(cfg, &law, masters, y, x_s);
+        progress(&format!(
+            "restitution k = {k}, row y = {y} rebuilt: {} nodes",
+            table.rows[j].nodes.len()
+        ));
+    }
+    if stale_rows.is_empty() {
+        return Ok(0);
+    }
+    // the cells whose four-row stencil holds a rebuilt row m: intervals m - 2 ..= m + 1
+    let n = table.rows.len();
+    let mut stale = vec![false; n];
+    for &m in &stale_rows {
+        stale[m.saturating_sub(2)..(m + 2).min(n)].fill(true);
+    }
+    check_cells(cfg, &law, table, masters, &stale, progress);
+    for r in &mut table.rows {
+        r.cells.k_all.clear();
+        r.cells.k_bouncing.clear();
+    }
+    table.header.push(format!(
+        "refilled: {} rows rebuilt whose nodes had no thresholds where the master tables now vouch for them (restitution::refine)",
+        stale_rows.len()
+    ));
+    Ok(stale_rows.len())
 }
 
 /// Checks every cell of `table` again, both sides and the bouncing side alone (a table built
