@@ -114,10 +114,18 @@ pub fn run_refine(root: &Path, only: &[usize]) -> Result<(), Error> {
     Ok(())
 }
 
-/// Rebuilds the rows of the committed tables (or `only` these indices) whose nodes had no
-/// thresholds where the master tables now vouch for them, and writes them; their k cells are
-/// cleared (run `--k-cells` after).
-pub fn run_refill(root: &Path, only: &[usize]) -> Result<(), Error> {
+/// A table-wide step of the build tools. `step(cfg, table, masters, progress)` changes a
+/// committed table in place and says what it did (`None`: nothing, the file is left as it is).
+type Step = dyn Fn(
+    &BuildConfig,
+    &mut TableData,
+    &MasterTables,
+    &(dyn Fn(&str) + Sync),
+) -> Result<Option<String>, Error>;
+
+/// Runs `step` on each committed table (or `only` these indices, k = 0.005 2^(i/3)) and writes
+/// the tables it changed.
+fn each_committed(root: &Path, only: &[usize], step: &Step) -> Result<(), Error> {
     let start = Instant::now();
     let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
     let (cfg, ends, masters) = (
@@ -132,41 +140,36 @@ pub fn run_refill(root: &Path, only: &[usize]) -> Result<(), Error> {
         if !only.is_empty() && !i.is_some_and(|i| only.contains(&i)) {
             continue;
         }
-        let rows = refill_table(&cfg, &mut t, masters, &progress)?;
-        if rows > 0 {
-            std::fs::write(table_path(root, t.k), to_text(&t))?;
+        let what = step(&cfg, &mut t, masters, &progress)?;
+        let path = table_path(root, t.k);
+        match what {
+            Some(what) => {
+                std::fs::write(&path, to_text(&t))?;
+                progress(&format!("k = {}: {what}; wrote {}", t.k, path.display()));
+            }
+            None => progress(&format!("k = {}: nothing to do", t.k)),
         }
-        progress(&format!("k = {}: {rows} rows rebuilt", t.k));
     }
     Ok(())
+}
+
+/// Rebuilds the rows of the committed tables (or `only` these indices) whose nodes had no
+/// thresholds where the master tables now vouch for them, and writes them; their k cells are
+/// cleared (run `--k-cells` after).
+pub fn run_refill(root: &Path, only: &[usize]) -> Result<(), Error> {
+    each_committed(root, only, &|cfg, t, masters, progress| {
+        let rows = refill_table(cfg, t, masters, progress)?;
+        Ok((rows > 0).then(|| format!("{rows} rows rebuilt")))
+    })
 }
 
 /// Checks every cell of the committed tables (or `only` these indices) again, the bouncing
 /// cells apart, and writes them (their k cells kept).
 pub fn run_recheck(root: &Path, only: &[usize]) -> Result<(), Error> {
-    let start = Instant::now();
-    let progress = |s: &str| eprintln!("{:.0} s: {s}", start.elapsed().as_secs_f64());
-    let (cfg, ends, masters) = (
-        BuildConfig::standard(),
-        committed_ends(root)?,
-        MasterTables::standard(),
-    );
-    require_masters(masters)?;
-    for mut t in committed(root)? {
-        let i =
-            (0..BuildConfig::TABLES).find(|&i| (grid_k(ends.k0, 3, i) / t.k - 1.0).abs() < 1e-9);
-        if !only.is_empty() && !i.is_some_and(|i| only.contains(&i)) {
-            continue;
-        }
-        recheck_table(&cfg, &mut t, masters, &progress)?;
-        std::fs::write(table_path(root, t.k), to_text(&t))?;
-        progress(&format!(
-            "k = {}: cells checked again; wrote {}",
-            t.k,
-            table_path(root, t.k).display()
-        ));
-    }
-    Ok(())
+    each_committed(root, only, &|cfg, t, masters, progress| {
+        recheck_table(cfg, t, masters, progress)?;
+        Ok(Some("cells checked again".into()))
+    })
 }
 
 /// Fills the k cells of the committed tables and writes them (`--k-cells`: the tables
