@@ -90,9 +90,9 @@ enum Command {
         /// cells apart (a double-collision miss next to the onset no longer refuses bouncing).
         #[arg(long, conflicts_with_all = ["check", "k_cells", "refine"])]
         recheck: bool,
-        /// Rebuild the rows of the committed tables (or those of `--only`) whose nodes were
-        /// built without thresholds where the master tables now vouch for them (the rows below
-        /// y = -4.5 of most k); run `--k-cells` after.
+        /// Rebuild the rows of the committed tables (or those of `--only`) holding a node that
+        /// was built without thresholds where the master tables now vouch for them (most of
+        /// them below y = -4.5); run `--k-cells` after.
         #[arg(long, conflicts_with_all = ["check", "k_cells", "refine", "recheck"])]
         refill: bool,
     },

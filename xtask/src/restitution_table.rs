@@ -134,10 +134,22 @@ fn each_committed(root: &Path, only: &[usize], step: &Step) -> Result<(), Error>
         MasterTables::standard(),
     );
     require_masters(masters)?;
-    for mut t in committed(root)? {
-        let i =
-            (0..BuildConfig::TABLES).find(|&i| (grid_k(ends.k0, 3, i) / t.k - 1.0).abs() < 1e-9);
-        if !only.is_empty() && !i.is_some_and(|i| only.contains(&i)) {
+    let tables = committed(root)?;
+    let index = |t: &TableData| {
+        (0..BuildConfig::TABLES).find(|&i| (grid_k(ends.k0, 3, i) / t.k - 1.0).abs() < 1e-9)
+    };
+    if let Some(i) = only
+        .iter()
+        .find(|&&i| !tables.iter().any(|t| index(t) == Some(i)))
+    {
+        return Err(format!(
+            "--only {i}: no committed restitution table of that index (k = 0.005 2^(i/3), i = 0..{})",
+            BuildConfig::TABLES - 1
+        )
+        .into());
+    }
+    for mut t in tables {
+        if !only.is_empty() && !index(&t).is_some_and(|i| only.contains(&i)) {
             continue;
         }
         let what = step(&cfg, &mut t, masters, &progress)?;

@@ -4,18 +4,19 @@
 //! 1. `cargo test --workspace` (which also builds the `stickiness` binary), then
 //!    `cargo xtask master-table --check` and `cargo xtask restitution-table --check` (a sample
 //!    of the tables' values recomputed);
-//! 2. a virtual environment under `target/venv` with the Python test dependencies (made in a
-//!    thread while step 1 runs, with DustPy and the site's Sphinx tools);
+//! 2. made in a thread while step 1 runs (most of it waits on downloads): a virtual
+//!    environment under `target/venv` with the Python test dependencies, DustPy for the
+//!    coupling tests (its PyPI release is a source distribution built with meson and f2py, so
+//!    gfortran is installed first when missing: `apt-get`, as root; otherwise the run stops
+//!    with the command to run) and the site's Sphinx tools; a failure there is printed at once
+//!    and ends the run after step 1;
 //! 3. the package as users install it: its wheel (`cargo xtask wheel`, here on the workspace's
 //!    opt-level-3 dev profile, so that it reuses the build of step 1), installed into it;
-//! 4. DustPy for the coupling tests: its PyPI release is a source distribution built with
-//!    meson and f2py, so gfortran is installed first when missing (`apt-get`, as root; otherwise
-//!    the run stops with the command to run);
-//! 5. `pytest crates/python/tests` (with `STICKINESS_CLI` pointing at the binary of step 1 and
+//! 4. `pytest crates/python/tests` (with `STICKINESS_CLI` pointing at the binary of step 1 and
 //!    `STICKINESS_WHEEL` at the wheel, which one test installs into a fresh environment without
 //!    Rust; the tutorial notebook runs as a test), then the docstrings' examples
 //!    (`--doctest-modules`);
-//! 6. the documentation site (`cargo xtask docs`, [`crate::docs`]) on that wheel, with warnings
+//! 5. the documentation site (`cargo xtask docs`, [`crate::docs`]) on that wheel, with warnings
 //!    as errors: a renamed function, a broken cross-reference or a broken intra-doc link fails.
 //!
 //! It installs what it needs itself and fails loudly on anything missing; it never skips.
@@ -118,7 +119,12 @@ fn shown(cmd: &Command) -> String {
 /// DustPy's Fortran build) is made while the Rust tests run: most of it waits on the network.
 pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
     std::thread::scope(|s| {
-        let environment = parts.python.then(|| s.spawn(|| python_environment(root)));
+        let environment = parts.python.then(|| {
+            s.spawn(|| {
+                python_environment(root)
+                    .inspect_err(|e| eprintln!("error: making the Python environment: {e}"))
+            })
+        });
         if parts.rust {
             rust_tests(root)?;
         }

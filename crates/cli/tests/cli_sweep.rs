@@ -188,7 +188,8 @@ fn kill_and_resume_gives_the_same_bytes() {
 }
 
 /// --resume drops a torn last line and starts again a file whose header was cut short; an
-/// existing file needs --resume or --force; a file of another sweep is refused; bad axes exit 2 naming the flag before any file is written.
+/// existing file needs --resume or --force; a file of another sweep is refused (its header cut
+/// short too); bad axes exit 2 naming the flag before any file is written.
 #[test]
 fn file_contract() {
     let d = dir("contract");
@@ -203,9 +204,13 @@ fn file_contract() {
     let (code, _, err) = sweep(&[&SMALL[..], &["--resume"]].concat(), &out);
     assert_eq!(code, 0, "{err}");
     assert_eq!(std::fs::read_to_string(&out).unwrap(), whole);
-    // a kill before the header was complete (here: cut in its first line, and empty) holds no
-    // rows: --resume starts it again and ends with the whole file
-    for cut in [20, 0] {
+    // a kill before the header was complete (cut in its first line, in the command line, just
+    // before its end, and empty) holds no rows: --resume starts it again, ending with the whole
+    // file
+    let header_len = whole.find("\nmaterial,").unwrap() + 1;
+    // past "--material co2,h2o", where the other sweep of this test differs
+    let command_line = whole.find("# command:").unwrap() + 60;
+    for cut in [20, command_line, header_len - 1, 0] {
         std::fs::write(&out, &whole[..cut]).unwrap();
         let (code, _, err) = sweep(&[&SMALL[..], &["--resume"]].concat(), &out);
         assert_eq!(code, 0, "cut at {cut}: {err}");
@@ -221,6 +226,12 @@ fn file_contract() {
     let (code, _, err) = sweep(&["--material", "co2", "--t-vis", "1e-9", "--resume"], &out);
     assert_eq!(code, 2);
     assert!(err.contains("another sweep"), "{err}");
+    // the header of this sweep cut short is not a beginning of the other's: refused too
+    std::fs::write(&out, &whole[..command_line]).unwrap();
+    let (code, _, err) = sweep(&["--material", "co2", "--t-vis", "1e-9", "--resume"], &out);
+    assert_eq!(code, 2);
+    assert!(err.contains("another sweep"), "{err}");
+    std::fs::write(&out, &whole).unwrap();
     assert_eq!(
         std::fs::read_to_string(&out).unwrap(),
         whole,

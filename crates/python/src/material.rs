@@ -244,13 +244,12 @@ impl Material {
 
     fn __repr__(&self) -> String {
         use numerics::format::number;
-        let m = self;
         format!(
             "Material(gamma_sv={}, young={}, poisson={}, density={})",
-            number(m.gamma_sv),
-            number(m.young),
-            number(m.poisson),
-            number(m.density)
+            number(self.gamma_sv),
+            number(self.young),
+            number(self.poisson),
+            number(self.density)
         )
     }
 
@@ -259,8 +258,7 @@ impl Material {
     }
 
     fn __hash__(&self) -> u64 {
-        let m = self;
-        [m.gamma_sv, m.young, m.poisson, m.density]
+        [self.gamma_sv, self.young, self.poisson, self.density]
             .iter()
             .fold(0xcbf2_9ce4_8422_2325u64, |h, x| {
                 (h ^ x.to_bits()).wrapping_mul(0x0100_0000_01b3)
@@ -268,10 +266,9 @@ impl Material {
     }
 
     fn __reduce__<'py>(&self, py: Python<'py>) -> (Bound<'py, PyType>, (f64, f64, f64, f64)) {
-        let m = self;
         (
             py.get_type::<Material>(),
-            (m.gamma_sv, m.young, m.poisson, m.density),
+            (self.gamma_sv, self.young, self.poisson, self.density),
         )
     }
 }

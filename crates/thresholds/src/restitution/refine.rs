@@ -19,12 +19,14 @@ use super::format::{RowData, TableData};
 use super::CLIFF_MARGIN;
 use crate::master::build::grid_k;
 use crate::master::format::EndsData;
+use crate::master::interp::stencil_start;
 use crate::master::MasterTables;
 use crate::ThresholdsError;
 use greenwood::CrackLaw;
 
-/// The band of y refined: below -4.5 the master tables of most k hold no rows (their
-/// thresholds, on which every cell stands, are missing), above 0.5 the cells hold.
+/// The band of y refined: above 0.5 the cells hold; below -4.5 (rows with values since
+/// [`refill_table`]) rows halfway answered 0.1 % more random collisions for tables a third
+/// larger (`docs/performance.md`, "Restitution tables").
 pub const REFINE_Y: (f64, f64) = (-4.5, 0.5);
 
 /// The closest two rows may come: the end curves' grid in y (1/64), on which a new row's end
@@ -92,14 +94,10 @@ pub fn refine_table(
         let new_y: Vec<f64> = new.iter().map(|r| r.y).collect();
         table.rows.extend(new);
         table.rows.sort_by(|a, b| a.y.total_cmp(&b.y));
-        // the cells whose four-row stencil holds a new row m: intervals m - 2 ..= m + 1
-        let n = table.rows.len();
-        let mut stale = vec![false; n];
-        for (m, r) in table.rows.iter().enumerate() {
-            if new_y.contains(&r.y) {
-                stale[m.saturating_sub(2)..(m + 2).min(n)].fill(true);
-            }
-        }
+        let changed: Vec<usize> = (0..table.rows.len())
+            .filter(|&m| new_y.contains(&table.rows[m].y))
+            .collect();
+        let stale = stencils_holding(table.rows.len(), &changed);
         check_cells(cfg, &law, table, masters, &stale, progress);
     }
     if added > 0 {
@@ -115,12 +113,27 @@ pub fn refine_table(
     Ok(added)
 }
 
+/// Which of the `n` rows' intervals (cells) have a four-row stencil holding one of the rows
+/// `changed`: interval j is interpolated through rows `stencil_start(j, n) .. + 4` (clamped at
+/// both ends), so those are the cells to check again.
+fn stencils_holding(n: usize, changed: &[usize]) -> Vec<bool> {
+    (0..n)
+        .map(|j| {
+            let s = stencil_start(j.min(n.saturating_sub(2)), n);
+            changed.iter().any(|&m| (s..s + 4).contains(&m))
+        })
+        .collect()
+}
+
 /// Rebuilds the rows of `table` that hold a node without thresholds where the master tables now
 /// vouch for them, and checks again the cells whose stencil holds a rebuilt row; returns the
-/// number of rows rebuilt. A node stands on the master tables' F and F_on: the tables built
-/// before the master tables had rows below y = -4.5 (most k) have no value at any node there,
-/// and the four-row stencils reaching down to them refuse answers up to y = -4.25. The rows
-/// keep their y and end x_s; the k cells are cleared (`--k-cells` computes them again).
+/// number of rows rebuilt. A node stands on the master tables' F and F_on and has no value
+/// without them: the tables built before the master tables had rows below y = -4.5 (most k)
+/// had none at any node there, and the four-row stencils reaching down to them refused answers
+/// up to y = -4.25 (81 rows of the committed tables: 51 below -4.5, 21 up to -3.75 for k =
+/// 0.04 and 0.0504, the top rows y = 5 - 5.5 of those two, 3 of k = 0.01 with one node each).
+/// The rows keep their y and end x_s; the k cells are cleared (`--k-cells` computes them
+/// again).
 pub fn refill_table(
     cfg: &BuildConfig,
     table: &mut TableData,
@@ -148,12 +161,7 @@ pub fn refill_table(
     if stale_rows.is_empty() {
         return Ok(0);
     }
-    // the cells whose four-row stencil holds a rebuilt row m: intervals m - 2 ..= m + 1
-    let n = table.rows.len();
-    let mut stale = vec![false; n];
-    for &m in &stale_rows {
-        stale[m.saturating_sub(2)..(m + 2).min(n)].fill(true);
-    }
+    let stale = stencils_holding(table.rows.len(), &stale_rows);
     check_cells(cfg, &law, table, masters, &stale, progress);
     for r in &mut table.rows {
         r.cells.k_all.clear();
@@ -204,6 +212,20 @@ mod tests {
                 ..CellFlags::default()
             },
         }
+    }
+
+    /// The cells to check again after row m changed are those whose four-row stencil holds m,
+    /// the clamped stencils at both ends included (interval 0 is interpolated through rows 0-3,
+    /// the last of 9 intervals through rows 6-9).
+    #[test]
+    fn the_stencils_holding_a_row_include_the_clamped_ends() {
+        let stale = |m| -> Vec<usize> {
+            let s = stencils_holding(10, &[m]);
+            (0..9).filter(|&j| s[j]).collect()
+        };
+        assert_eq!(stale(3), [0, 1, 2, 3, 4]);
+        assert_eq!(stale(6), [4, 5, 6, 7, 8]);
+        assert_eq!(stale(0), [0, 1]);
     }
 
     /// A failed cell counts where the tables would answer (at least CLIFF_MARGIN from the end,

@@ -23,6 +23,14 @@ pub struct Written {
     pub complete_len: usize,
 }
 
+impl Written {
+    /// Whether the file's header is complete and kept: `false` for a file killed before its
+    /// header was (then the header is to be written again).
+    pub fn keeps_header(&self) -> bool {
+        self.complete_len > 0
+    }
+}
+
 /// The complete rows of the file `text` if it holds the sweep whose header is `header` (as
 /// [`super::header_text`] writes it); `None` if it holds another sweep.
 ///
@@ -37,8 +45,9 @@ pub struct Written {
 /// assert_eq!(w.rows, ["row 1", "row 2"]);
 /// assert_eq!(w.complete_len, "# h\nrow 1\nrow 2\n".len()); // the torn "row" is cut off
 /// assert!(written_rows("# other\n", "# h\n").is_none());
-/// // killed while writing the header
-/// assert_eq!(written_rows("# ", "# h\n").unwrap().complete_len, 0);
+/// // killed while writing the header; the beginning of another sweep's header is refused
+/// assert!(!written_rows("# ", "# h\n").unwrap().keeps_header());
+/// assert!(written_rows("# o", "# h\n").is_none());
 /// ```
 pub fn written_rows(text: &str, header: &str) -> Option<Written> {
     if text.len() < header.len() && header.starts_with(text) {

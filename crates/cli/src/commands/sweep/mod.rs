@@ -30,7 +30,8 @@ use thresholds::sweep::{
 use thresholds::{SearchOptions, ThresholdsError};
 
 /// What an existing file holds for the sweep with `header`: its complete rows and the length up
-/// to them (a torn last line beyond), or `None` for a fresh file. Nothing is written here.
+/// to them (a torn last line beyond; no header kept when a kill cut it short), or `None` for a
+/// fresh file. Nothing is written here.
 fn existing_rows(args: &SweepArgs, path: &Path, header: &str) -> Result<Option<Written>, CliError> {
     let exists = path.exists();
     if exists && !args.resume && !args.force {
@@ -103,7 +104,7 @@ fn sample(len: usize, n: usize) -> Vec<usize> {
 /// The file ready for appending: a fresh one holding the header (also when a kill left the
 /// header incomplete), or the kept one with its torn last line cut off.
 fn prepare(path: &Path, header: &str, written: Option<&Written>) -> Result<(), CliError> {
-    let Some(w) = written.filter(|w| w.complete_len >= header.len()) else {
+    let Some(w) = written.filter(|w| w.keeps_header()) else {
         return std::fs::write(path, header).map_err(|e| {
             CliError::Usage(format!(
                 "--out {}: cannot write the file: {e}",
