@@ -343,3 +343,36 @@ fn method_column() {
         ]
     );
 }
+
+/// A kill can cut a line inside a character (a material file's non-ASCII path, written in the
+/// header and in every row): --resume cuts the torn line off and ends with the whole file.
+#[test]
+fn a_file_cut_inside_a_character_resumes() {
+    let d = dir("utf8");
+    let material = d.join("glacé.json");
+    std::fs::write(
+        &material,
+        r#"{"gamma_sv": 0.08, "young": 1.07e10, "poisson": 0.26, "density": 1560}"#,
+    )
+    .unwrap();
+    let out = d.join("s.csv");
+    let material = material.display().to_string();
+    let args = ["--material", &material, "--t-vis", "1e-12,1e-10,1e-9"];
+    let (code, _, err) = sweep(&args, &out);
+    assert_eq!(code, 0, "{err}");
+    let whole = std::fs::read(&out).unwrap();
+    // inside the two bytes of 'é': in the header's command line, and in the last row
+    let e_acute = "é".as_bytes();
+    let inside: Vec<usize> = whole
+        .windows(2)
+        .enumerate()
+        .filter(|(_, w)| *w == e_acute)
+        .map(|(i, _)| i + 1)
+        .collect();
+    for cut in [inside[0], inside[inside.len() - 1]] {
+        std::fs::write(&out, &whole[..cut]).unwrap();
+        let (code, _, err) = sweep(&[&args[..], &["--resume"]].concat(), &out);
+        assert_eq!(code, 0, "cut at {cut}: {err}");
+        assert!(std::fs::read(&out).unwrap() == whole, "cut at {cut}");
+    }
+}

@@ -25,7 +25,8 @@ pub mod row;
 pub use axis::{canonical, geomspace, parse_axis, AxisError};
 pub use grid::{Chunk, Grid, Laws, NamedMaterial, Partner, Point, TVisAxis};
 pub use resume::{
-    check_rows, remaining, verify_rows, written_rows, BadRow, Remaining, VerifyError, Written,
+    check_rows, file_text, remaining, verify_rows, written_rows, BadRow, Remaining, VerifyError,
+    Written,
 };
 pub use row::{
     header_lines, header_text, hint_of, point_cells, row_fields, row_text, Cell, Format, Row,

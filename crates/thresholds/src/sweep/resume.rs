@@ -31,6 +31,27 @@ impl Written {
     }
 }
 
+/// The text of a sweep file as read (bytes): all of it, or all but a character a kill tore at
+/// its end (a non-ASCII path or name cut mid-write; the torn line is cut off anyway); `None`
+/// if it is not UTF-8 elsewhere (not a file of a sweep).
+///
+/// # Example
+/// ```
+/// use thresholds::sweep::file_text;
+/// let whole = "# glac\u{e9}.json\n".as_bytes();
+/// assert_eq!(file_text(&whole[..7]), Some("# glac"));
+/// assert_eq!(file_text(whole), Some("# glac\u{e9}.json\n"));
+/// assert_eq!(file_text(b"# \xff rest"), None);
+/// ```
+pub fn file_text(bytes: &[u8]) -> Option<&str> {
+    match std::str::from_utf8(bytes) {
+        Ok(text) => Some(text),
+        // error_len None: the input ended inside a character
+        Err(e) if e.error_len().is_none() => std::str::from_utf8(&bytes[..e.valid_up_to()]).ok(),
+        Err(_) => None,
+    }
+}
+
 /// The complete rows of the file `text` if it holds the sweep whose header is `header` (as
 /// [`super::header_text`] writes it); `None` if it holds another sweep.
 ///

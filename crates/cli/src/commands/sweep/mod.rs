@@ -24,8 +24,8 @@ use std::path::Path;
 use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::mpsc;
 use thresholds::sweep::{
-    check_rows, remaining, row_text, verify_rows, written_rows, Grid, Laws, Row, VerifyError,
-    Written,
+    check_rows, file_text, remaining, row_text, verify_rows, written_rows, Grid, Laws, Row,
+    VerifyError, Written,
 };
 use thresholds::{SearchOptions, ThresholdsError};
 
@@ -43,9 +43,15 @@ fn existing_rows(args: &SweepArgs, path: &Path, header: &str) -> Result<Option<W
     if !(exists && args.resume) {
         return Ok(None);
     }
-    let text = std::fs::read_to_string(path)
+    let bytes = std::fs::read(path)
         .map_err(|e| CliError::Usage(format!("--resume: cannot read {}: {e}", path.display())))?;
-    match written_rows(&text, header) {
+    let Some(text) = file_text(&bytes) else {
+        return Err(CliError::Usage(format!(
+            "--resume: {} is not a text file of a sweep (not UTF-8); use another --out, or --force to overwrite it",
+            path.display()
+        )));
+    };
+    match written_rows(text, header) {
         Some(w) => Ok(Some(w)),
         None => Err(CliError::Usage(format!(
             "--resume: {} holds another sweep (its header differs from this command's); use another --out, or --force to overwrite it",
