@@ -13,13 +13,17 @@
 //! agrees. The impact speeds are half bouncing, half double collisions (between V_on and
 //! V_stick: where that window is narrower than 1e-3 of V_stick, as for most grains, nearly all
 //! of them lie within 1e-4 of the onset, where the ODE decides); with `wide`, log-uniform from
-//! V_stick/2 to 100 V_stick (or the search limit), as an experiment's speeds would be.
+//! V_stick/2 to 100 V_stick (or the search limit), as an experiment's speeds would be; then
+//! also the time of all of them answered as `collision(.., ThresholdMethod::Table)` answers
+//! them (the tables, else the ODE) on every thread (`RAYON_NUM_THREADS`).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use std::time::Instant;
 use thresholds::restitution::RestitutionTables;
-use thresholds::{sticking_thresholds, Collider, CrackLaw, SearchOptions};
+use thresholds::{
+    sticking_thresholds, Collider, CrackLaw, SearchOptions, SolverOptions, ThresholdMethod,
+};
 
 #[path = "common/domain.rs"]
 #[allow(dead_code)] // the example of the master tables reads the rest
@@ -75,6 +79,32 @@ fn main() {
         100.0 * answered as f64 / n as f64,
         1e6 * elapsed / n as f64
     );
+    if wide {
+        use rayon::prelude::*;
+        let solver = SolverOptions::default();
+        let start = Instant::now();
+        let by_ode: usize = cases
+            .par_iter()
+            .map(|(p, k, v_in)| {
+                let law = CrackLaw::new(*k).unwrap();
+                let (_, by) = thresholds::restitution::collision(
+                    &p.contact,
+                    &law,
+                    p.t_vis,
+                    *v_in,
+                    &solver,
+                    ThresholdMethod::Table,
+                )
+                .unwrap();
+                usize::from(by == ThresholdMethod::Search)
+            })
+            .sum();
+        println!(
+            "all {n}, the tables or else the ODE ({by_ode} by the ODE), {} threads: {:.3} s",
+            rayon::current_num_threads(),
+            start.elapsed().as_secs_f64()
+        );
+    }
     let (mut worst, mut same, mut compared, mut over) = (0.0f64, 0, 0, 0);
     for ((p, k, v_in), a) in cases.iter().zip(&answers).take(sample) {
         let Some(a) = a else { continue };
