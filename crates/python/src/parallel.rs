@@ -3,6 +3,7 @@
 use crate::error::Error;
 use pyo3::prelude::*;
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// Elements per thread in one chunk. Between chunks the GIL is taken back to check for Ctrl-C:
@@ -32,9 +33,6 @@ const SEQUENTIAL_REST: Duration = Duration::from_micros(250);
 /// clock a tenth of that.
 const CLOCK_EVERY: usize = 4;
 
-/// Room made for the sequential start's results at once (they rarely pass a few hundred).
-const PROBE_CAPACITY: usize = 1024;
-
 /// After the start, a chunk holds about this much work on every core (from the rate measured
 /// so far), so that Ctrl-C is checked every few tens of milliseconds whatever an element costs.
 const CHUNK_TIME: Duration = Duration::from_millis(20);
@@ -52,35 +50,36 @@ where
     T: Send,
     F: Fn(usize) -> Result<T, Error> + Sync + Send,
 {
-    let mut out = Vec::with_capacity(n);
+    // every result is written once, where it ends (the chunks' in parallel): a million table
+    // answers moved through a second vector cost a tenth of the call, on one thread
+    let mut out: Vec<Result<T, Error>> = Vec::with_capacity(n);
     let began = Instant::now();
-    let first: Vec<Result<T, Error>> = py.detach(|| {
-        let mut done = Vec::with_capacity(n.min(PROBE_CAPACITY));
-        while done.len() < n {
+    py.detach(|| {
+        while out.len() < n {
             // at least one element measured (the chunks' size comes from its rate); the clock
             // read after each of the first few, then every CLOCK_EVERY-th (a read costs a
             // tenth of a table answer)
-            if !done.is_empty() && (done.len() < CLOCK_EVERY || done.len() % CLOCK_EVERY == 0) {
+            let done = out.len();
+            if done > 0 && (done < CLOCK_EVERY || done.is_multiple_of(CLOCK_EVERY)) {
                 let elapsed = began.elapsed();
-                let per_element = elapsed.as_secs_f64() / done.len() as f64;
+                let per_element = elapsed.as_secs_f64() / done as f64;
                 if elapsed >= SEQUENTIAL_PROBE
-                    && per_element * (n - done.len()) as f64 >= SEQUENTIAL_REST.as_secs_f64()
+                    && per_element * (n - done) as f64 >= SEQUENTIAL_REST.as_secs_f64()
                 {
                     break;
                 }
             }
-            let r = f(done.len());
+            let r = f(done);
             let failed = r.is_err();
-            done.push(r);
+            out.push(r);
             if failed {
                 break;
             }
         }
-        done
     });
-    let mut start = first.len();
-    for r in first {
-        out.push(r?);
+    let mut start = out.len();
+    if out.last().is_some_and(Result::is_err) {
+        return Err(first_error(out, 0));
     }
     py.check_signals()?;
     let threads = rayon::current_num_threads().max(1);
@@ -91,10 +90,18 @@ where
     while start < n {
         let end = (start + chunk).min(n);
         let t = Instant::now();
-        let part: Vec<Result<T, Error>> =
-            py.detach(|| (start..end).into_par_iter().map(&f).collect());
-        for r in part {
-            out.push(r?);
+        let failed = AtomicBool::new(false);
+        py.detach(|| {
+            out.par_extend((start..end).into_par_iter().map(|i| {
+                let r = f(i);
+                if r.is_err() {
+                    failed.store(true, Ordering::Relaxed);
+                }
+                r
+            }))
+        });
+        if failed.into_inner() {
+            return Err(first_error(out, start));
         }
         py.check_signals()?;
         let per_element = t.elapsed().as_secs_f64() / (end - start) as f64 * threads as f64;
@@ -102,5 +109,16 @@ where
             .clamp(batch(), MAX_CHUNK);
         start = end;
     }
-    Ok(out)
+    // every one is Ok here; the same allocation reused (in place)
+    out.into_iter()
+        .collect::<Result<Vec<T>, Error>>()
+        .map_err(Into::into)
+}
+
+/// The first error of `results` from index `from` on, in index order (there is one).
+fn first_error<T>(results: Vec<Result<T, Error>>, from: usize) -> PyErr {
+    match results.into_iter().skip(from).find_map(Result::err) {
+        Some(e) => e.into(),
+        None => pyo3::exceptions::PyRuntimeError::new_err("an element failed without an error"),
+    }
 }
