@@ -6,11 +6,11 @@
 
 use crate::error::Error;
 use crate::material::Material;
+use crate::parallel::{Columns, Row};
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use rayon::prelude::*;
 use std::collections::HashMap;
 use thresholds::{
     Contact, CrackLaw, Geometry, GreenwoodError, OutOfRange, SearchOptions, ThresholdMethod,
@@ -172,7 +172,25 @@ impl<'a> Elements<'a> {
         py: Python<'_>,
         f: impl Fn(usize, &Contact) -> Result<(T, Warned), Error> + Sync + Send,
     ) -> PyResult<Vec<(T, Warned)>> {
-        crate::parallel::map(py, self.n, |i| {
+        crate::parallel::map(py, self.n, self.with_contact(f))
+    }
+
+    /// [`Elements::map`] for rows of floats (and a method code), written straight into their
+    /// columns ([`crate::parallel::map_rows`]).
+    pub fn map_rows<const N: usize>(
+        &self,
+        py: Python<'_>,
+        f: impl Fn(usize, &Contact) -> Result<Row<N>, Error> + Sync + Send,
+    ) -> PyResult<Columns> {
+        crate::parallel::map_rows(py, self.n, self.with_contact(f))
+    }
+
+    /// `f` of element i with i's contact, the contact's warnings before those `f` gives.
+    fn with_contact<'s, T>(
+        &'s self,
+        f: impl Fn(usize, &Contact) -> Result<(T, Warned), Error> + Sync + Send + 's,
+    ) -> impl Fn(usize) -> Result<(T, Warned), Error> + Sync + Send + 's {
+        move |i| {
             let (c, warns) = self.contact(i)?;
             let (value, own) = f(i, &c)?;
             if !warns {
@@ -181,7 +199,7 @@ impl<'a> Elements<'a> {
             let mut all = warned(i, c.warnings());
             all.extend(own);
             Ok((value, all))
-        })
+        }
     }
 }
 
@@ -290,91 +308,40 @@ pub fn warned(i: usize, warnings: impl IntoIterator<Item = Warning>) -> Warned {
         .collect()
 }
 
-/// One element's row of a result: its f64 columns and, for the functions that say which
-/// method answered, that method's code ([`method_code`]).
-pub trait Row<const N: usize> {
-    /// Whether the rows carry a method code (then the dict has a `"method"` column).
-    const HAS_METHOD: bool;
-    /// The f64 columns.
-    fn values(&self) -> &[f64; N];
-    /// The method code (0 where the rows carry none).
-    fn method(&self) -> u8;
-}
-
-impl<const N: usize> Row<N> for [f64; N] {
-    const HAS_METHOD: bool = false;
-    fn values(&self) -> &[f64; N] {
-        self
-    }
-    fn method(&self) -> u8 {
-        0
-    }
-}
-
-impl<const N: usize> Row<N> for ([f64; N], u8) {
-    const HAS_METHOD: bool = true;
-    fn values(&self) -> &[f64; N] {
-        &self.0
-    }
-    fn method(&self) -> u8 {
-        self.1
-    }
-}
-
 /// Columns of f64 results, the `"method"` column (the code of the method that answered each
-/// element, where the rows carry it), and the warnings, as a dict of flat arrays (of floats and
-/// an int method code for a `scalar` call: one row, every argument a float).
-pub fn columns<'py, const N: usize, R: Row<N> + Sync>(
+/// element) where `has_method`, and the warnings, as a dict of flat arrays (of floats and an
+/// int method code for a `scalar` call: one element, every argument a float).
+pub fn columns<'py>(
     py: Python<'py>,
-    names: [&str; N],
-    rows: &[(R, Warned)],
+    names: &[&str],
+    columns: Columns,
+    has_method: bool,
     scalar: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let dict = PyDict::new(py);
-    match rows {
+    let Columns {
+        values,
+        codes,
+        warnings,
+    } = columns;
+    if scalar && codes.len() == 1 {
         // a call of floats: floats (and an int method code), no arrays
-        [(row, _)] if scalar => {
-            for (name, v) in names.iter().zip(row.values()) {
-                dict.set_item(*name, *v)?;
-            }
-            if R::HAS_METHOD {
-                dict.set_item("method", row.method())?;
-            }
+        for (name, v) in names.iter().zip(&values) {
+            dict.set_item(*name, v[0])?;
         }
-        // the columns of a million rows made on all cores (a tenth of the call on one)
-        _ => {
-            for (j, name) in names.iter().enumerate() {
-                let col = column(rows, |r| r.0.values()[j]);
-                dict.set_item(*name, PyArray1::from_vec(py, col))?;
-            }
-            if R::HAS_METHOD {
-                let codes = column(rows, |r| r.0.method());
-                dict.set_item("method", PyArray1::from_vec(py, codes))?;
-            }
+        if has_method {
+            dict.set_item("method", codes[0])?;
+        }
+    } else {
+        for (name, v) in names.iter().zip(values) {
+            dict.set_item(*name, PyArray1::from_vec(py, v))?;
+        }
+        if has_method {
+            dict.set_item("method", PyArray1::from_vec(py, codes))?;
         }
     }
-    let warnings: Warned = if rows.len() < PARALLEL_ROWS {
-        rows.iter().flat_map(|r| r.1.iter().cloned()).collect()
-    } else {
-        rows.par_iter()
-            .flat_map_iter(|r| r.1.iter().cloned())
-            .collect()
-    };
     dict.set_item("warnings", warnings)?;
     Ok(dict)
-}
-
-/// From this many rows on, [`columns`] are made on all cores: below, waking the thread pool
-/// (50-90 us) costs more than the copy (a 64-row call took 450 us instead of 27 with it).
-const PARALLEL_ROWS: usize = 1 << 16;
-
-/// `f` of every row, on all cores from [`PARALLEL_ROWS`] rows on.
-fn column<R: Sync, T: Send>(rows: &[R], f: impl Fn(&R) -> T + Sync + Send) -> Vec<T> {
-    if rows.len() < PARALLEL_ROWS {
-        rows.iter().map(f).collect()
-    } else {
-        rows.par_iter().map(f).collect()
-    }
 }
 
 pub fn or_nan(v: Option<f64>) -> f64 {

@@ -36,8 +36,9 @@ elementwise! {
     /// JKR contact: a_eq, delta_eq (m), tabor, f_crit (N), delta_crit (m), e_stick, e_break (J),
     /// v_stick_jkr (m/s).
     fn jkr(py, e: Elements[;;]) {
-        let rows = e.map(py, |_, c| Ok((c.jkr_values(), Vec::new())))?;
-        columns(py, thresholds::JKR_QUANTITIES.map(|q| q.0), &rows, e.scalar)
+        let found = e.map_rows(py, |_, c| Ok(((c.jkr_values(), 0), Vec::new())))?;
+        let names = thresholds::JKR_QUANTITIES.map(|q| q.0);
+        columns(py, &names, found, false, e.scalar)
     }
 }
 
@@ -45,12 +46,12 @@ elementwise! {
     /// The two dimensionless numbers of a collision (`Contact::dimensionless`): the drag number
     /// c_d and the crack-speed number c_a, and the JKR time unit t0 (s).
     fn dimensionless(py, e: Elements[t_vis;; gamma_sv]) {
-        let rows = e.map(py, |i, c| {
+        let found = e.map_rows(py, |i, c| {
             numerics::positive("t_vis", t_vis[i], "s").map_err(|bad| Error::Input { bad, index: i })?;
             let d = c.dimensionless(t_vis[i]);
-            Ok(([d.c_d, d.c_a, c.t0()], Vec::new()))
+            Ok((([d.c_d, d.c_a, c.t0()], 0), Vec::new()))
         })?;
-        columns(py, ["c_d", "c_a", "t0"], &rows, e.scalar)
+        columns(py, &["c_d", "c_a", "t0"], found, false, e.scalar)
     }
 }
 

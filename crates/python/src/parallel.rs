@@ -1,8 +1,10 @@
 //! Elementwise work over all cores, with the GIL released and Ctrl-C checked between chunks.
 
+use crate::args::Warned;
 use crate::error::Error;
 use pyo3::prelude::*;
 use rayon::prelude::*;
+use std::ops::Range;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
@@ -40,47 +42,41 @@ const CHUNK_TIME: Duration = Duration::from_millis(20);
 /// The most elements in one chunk.
 const MAX_CHUNK: usize = 1 << 20;
 
-/// `f(0), ..., f(n - 1)` with the GIL released: first one after the other for
-/// [`SEQUENTIAL_PROBE`] (and on to the end if the rest is shorter than
-/// [`SEQUENTIAL_REST`]), then the rest on all cores in chunks with a check for signals
-/// (Ctrl-C raises `KeyboardInterrupt`) after each; the first error in index order is
-/// returned.
-pub fn map<T, F>(py: Python<'_>, n: usize, f: F) -> PyResult<Vec<T>>
-where
-    T: Send,
-    F: Fn(usize) -> Result<T, Error> + Sync + Send,
-{
-    // every result is written once, where it ends (the chunks' in parallel): a million table
-    // answers moved through a second vector cost a tenth of the call, on one thread
-    let mut out: Vec<Result<T, Error>> = Vec::with_capacity(n);
+/// What [`drive`] fills, element by element on the calling thread or a range of elements on
+/// all cores.
+trait Sink: Send {
+    /// Element `i`, on the calling thread.
+    fn one(&mut self, i: usize) -> Result<(), Error>;
+    /// The elements of `range`, on all cores; the first error in index order.
+    fn many(&mut self, range: Range<usize>) -> Result<(), Error>;
+}
+
+/// Fills `sink` with elements `0..n` with the GIL released: first one after the other for
+/// [`SEQUENTIAL_PROBE`] (and on to the end if the rest is shorter than [`SEQUENTIAL_REST`]),
+/// then the rest on all cores in chunks with a check for signals (Ctrl-C raises
+/// `KeyboardInterrupt`) after each; the first error in index order is returned.
+fn drive(py: Python<'_>, n: usize, sink: &mut impl Sink) -> PyResult<()> {
     let began = Instant::now();
+    let mut start = 0;
     py.detach(|| {
-        while out.len() < n {
+        while start < n {
             // at least one element measured (the chunks' size comes from its rate); the clock
             // read after each of the first few, then every CLOCK_EVERY-th (a read costs a
             // tenth of a table answer)
-            let done = out.len();
-            if done > 0 && (done < CLOCK_EVERY || done.is_multiple_of(CLOCK_EVERY)) {
+            if start > 0 && (start < CLOCK_EVERY || start.is_multiple_of(CLOCK_EVERY)) {
                 let elapsed = began.elapsed();
-                let per_element = elapsed.as_secs_f64() / done as f64;
+                let per_element = elapsed.as_secs_f64() / start as f64;
                 if elapsed >= SEQUENTIAL_PROBE
-                    && per_element * (n - done) as f64 >= SEQUENTIAL_REST.as_secs_f64()
+                    && per_element * (n - start) as f64 >= SEQUENTIAL_REST.as_secs_f64()
                 {
                     break;
                 }
             }
-            let r = f(done);
-            let failed = r.is_err();
-            out.push(r);
-            if failed {
-                break;
-            }
+            sink.one(start)?;
+            start += 1;
         }
-    });
-    let mut start = out.len();
-    if out.last().is_some_and(Result::is_err) {
-        return Err(first_error(out, 0));
-    }
+        Ok::<(), Error>(())
+    })?;
     py.check_signals()?;
     let threads = rayon::current_num_threads().max(1);
     // elements a thread computes in CHUNK_TIME at the rate seen so far
@@ -90,35 +86,169 @@ where
     while start < n {
         let end = (start + chunk).min(n);
         let t = Instant::now();
-        let failed = AtomicBool::new(false);
-        py.detach(|| {
-            out.par_extend((start..end).into_par_iter().map(|i| {
-                let r = f(i);
-                if r.is_err() {
-                    failed.store(true, Ordering::Relaxed);
-                }
-                r
-            }))
-        });
-        if failed.into_inner() {
-            return Err(first_error(out, start));
-        }
+        py.detach(|| sink.many(start..end))?;
         py.check_signals()?;
         let per_element = t.elapsed().as_secs_f64() / (end - start) as f64 * threads as f64;
         chunk = ((CHUNK_TIME.as_secs_f64() / per_element.max(1e-9)) as usize * threads)
             .clamp(batch(), MAX_CHUNK);
         start = end;
     }
-    // every one is Ok here; the same allocation reused (in place)
-    out.into_iter()
-        .collect::<Result<Vec<T>, Error>>()
-        .map_err(Into::into)
+    Ok(())
 }
 
-/// The first error of `results` from index `from` on, in index order (there is one).
-fn first_error<T>(results: Vec<Result<T, Error>>, from: usize) -> PyErr {
-    match results.into_iter().skip(from).find_map(Result::err) {
-        Some(e) => e.into(),
-        None => pyo3::exceptions::PyRuntimeError::new_err("an element failed without an error"),
+/// `f(0), ..., f(n - 1)` on all cores as [`drive`] computes them.
+pub fn map<T, F>(py: Python<'_>, n: usize, f: F) -> PyResult<Vec<T>>
+where
+    T: Send,
+    F: Fn(usize) -> Result<T, Error> + Sync + Send,
+{
+    let mut sink = Collect {
+        f: &f,
+        out: Vec::with_capacity(n),
+    };
+    drive(py, n, &mut sink)?;
+    // every one is Ok here; the same allocation reused (in place)
+    Ok(sink.out.into_iter().collect::<Result<Vec<T>, Error>>()?)
+}
+
+/// [`map`]'s results, written once where they end (a chunk's on all cores, rayon's
+/// `par_extend`): a million table answers moved through a second vector cost a tenth of the
+/// call, on one thread.
+struct Collect<'f, T, F> {
+    f: &'f F,
+    out: Vec<Result<T, Error>>,
+}
+
+impl<T, F> Sink for Collect<'_, T, F>
+where
+    T: Send,
+    F: Fn(usize) -> Result<T, Error> + Sync + Send,
+{
+    fn one(&mut self, i: usize) -> Result<(), Error> {
+        self.out.push(Ok((self.f)(i)?));
+        Ok(())
+    }
+
+    fn many(&mut self, range: Range<usize>) -> Result<(), Error> {
+        let failed = AtomicBool::new(false);
+        let from = self.out.len();
+        self.out.par_extend(range.into_par_iter().map(|i| {
+            let r = (self.f)(i);
+            if r.is_err() {
+                failed.store(true, Ordering::Relaxed);
+            }
+            r
+        }));
+        match failed.into_inner() {
+            false => Ok(()),
+            true => Err(self
+                .out
+                .drain(from..)
+                .find_map(Result::err)
+                .unwrap_or_else(|| Error::Solver("an element failed without an error".into()))),
+        }
+    }
+}
+
+/// What an element of a threshold function gives: its row of `N` floats with the code of the
+/// method that answered, and its warnings.
+pub type Row<const N: usize> = (([f64; N], u8), Warned);
+
+/// The columns of [`map_rows`]: `N` float columns, the method codes and the warnings.
+pub struct Columns {
+    /// The float columns, each of every element.
+    pub values: Vec<Vec<f64>>,
+    /// The method code of every element.
+    pub codes: Vec<u8>,
+    /// The warnings, in the order of the elements.
+    pub warnings: Warned,
+}
+
+/// Elements a thread computes in one piece in [`map_rows`], writing their rows into every
+/// column.
+const BLOCK: usize = 4096;
+
+/// `f(0), ..., f(n - 1)` as [`map`] computes them, each row written straight into its columns
+/// (41 bytes an element for five columns, against the 80 of a row kept first and copied into
+/// columns after: page faults of fresh memory were a sixth of a million table answers).
+pub fn map_rows<const N: usize, F>(py: Python<'_>, n: usize, f: F) -> PyResult<Columns>
+where
+    F: Fn(usize) -> Result<Row<N>, Error> + Sync + Send,
+{
+    let mut sink = IntoColumns {
+        f: &f,
+        columns: Columns {
+            values: (0..N).map(|_| vec![0.0; n]).collect(),
+            codes: vec![0; n],
+            warnings: Warned::new(),
+        },
+    };
+    drive(py, n, &mut sink)?;
+    Ok(sink.columns)
+}
+
+/// A block of [`map_rows`]: its first element, its piece of every float column and of the codes.
+type Block<'a> = (usize, Vec<&'a mut [f64]>, &'a mut [u8]);
+
+/// [`map_rows`]'s sink.
+struct IntoColumns<'f, F> {
+    f: &'f F,
+    columns: Columns,
+}
+
+impl<const N: usize, F> Sink for IntoColumns<'_, F>
+where
+    F: Fn(usize) -> Result<Row<N>, Error> + Sync + Send,
+{
+    fn one(&mut self, i: usize) -> Result<(), Error> {
+        let ((row, code), w) = (self.f)(i)?;
+        for (column, v) in self.columns.values.iter_mut().zip(row) {
+            column[i] = v;
+        }
+        self.columns.codes[i] = code;
+        self.columns.warnings.extend(w);
+        Ok(())
+    }
+
+    fn many(&mut self, range: Range<usize>) -> Result<(), Error> {
+        // each block's piece of every column, handed to one thread
+        let Columns {
+            values,
+            codes,
+            warnings,
+        } = &mut self.columns;
+        let mut pieces: Vec<_> = values
+            .iter_mut()
+            .map(|c| c[range.clone()].chunks_mut(BLOCK))
+            .collect();
+        let blocks: Vec<Block> = codes[range.clone()]
+            .chunks_mut(BLOCK)
+            .enumerate()
+            .map(|(b, codes)| {
+                let parts = pieces.iter_mut().filter_map(Iterator::next).collect();
+                (range.start + b * BLOCK, parts, codes)
+            })
+            .collect();
+        let f = self.f;
+        let found: Vec<Result<Warned, Error>> = blocks
+            .into_par_iter()
+            .map(|(first, mut parts, codes)| {
+                let mut found = Warned::new();
+                for (q, code) in codes.iter_mut().enumerate() {
+                    let ((row, c), w) = f(first + q)?;
+                    for (part, v) in parts.iter_mut().zip(row) {
+                        part[q] = v;
+                    }
+                    *code = c;
+                    found.extend(w);
+                }
+                Ok(found)
+            })
+            .collect();
+        // the blocks in order: the first error is the first in index order
+        for w in found {
+            warnings.extend(w?);
+        }
+        Ok(())
     }
 }

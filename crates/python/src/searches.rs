@@ -49,12 +49,12 @@ fn per_element<'py, T: Answer, const N: usize>(
     cols: [Column<T>; N],
     f: impl Fn(usize, &Contact, &CrackLaw) -> Result<(T, Warned), ThresholdsError> + Sync + Send,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let rows = e.map(py, |i, c| {
+    let found = e.map_rows(py, |i, c| {
         let (answer, w) = f(i, c, e.law(i)?).map_err(|err| Error::from_thresholds(err, i))?;
         let row = cols.map(|c| or_nan(c.1(&answer)));
         Ok(((row, method_code(answer.method())), w))
     })?;
-    columns(py, cols.map(|c| c.0), &rows, e.scalar)
+    columns(py, &cols.map(|c| c.0), found, true, e.scalar)
 }
 
 /// The columns of [`v_stick`].
