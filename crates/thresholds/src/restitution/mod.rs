@@ -260,7 +260,7 @@ impl RestitutionTables {
     fn h(&self, x: f64, y: f64, k: f64, side: Side, coord: f64, checked: bool) -> Option<f64> {
         let ks = &self.k;
         if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
-            return table_h(self.table(i)?, x, y, side, coord, checked, false);
+            return Stencil::new(self.table(i)?, x, y, side, coord, checked, false)?.h(y);
         }
         let n = ks.len();
         if n < 4 || !(k > ks[0] && k < ks[n - 1]) {
@@ -474,19 +474,6 @@ impl<'a> Stencil<'a> {
         let h = lagrange(&t.ys[self.first_row..self.first_row + 4], &across, y);
         h.is_finite().then_some(h)
     }
-}
-
-/// h of one table at `(x, y)`: four nodes around x on each of the four rows around y.
-fn table_h(
-    t: &Table,
-    x: f64,
-    y: f64,
-    side: Side,
-    coord: f64,
-    checked: bool,
-    k_checked: bool,
-) -> Option<f64> {
-    Stencil::new(t, x, y, side, coord, checked, k_checked)?.h(y)
 }
 
 /// Significant figures of h written: 8, far below what e = 1e-4 needs.
