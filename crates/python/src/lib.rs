@@ -8,7 +8,8 @@
 //!
 //! Every vectorised function here takes flat `float64` arrays of one common length (the
 //! broadcast inputs), computes the elements on all cores with the GIL released, checks for
-//! Ctrl-C between chunks of elements (`parallel::map`), and returns a dict of flat arrays
+//! Ctrl-C between chunks of elements (`parallel::map`; `parallel::map_rows` for rows of
+//! floats, written straight into their columns), and returns a dict of flat arrays
 //! (NaN where a value does not exist) plus the warnings of each element. Errors cross the
 //! boundary through `error::Error`, one newtype mapping each kind to a Python exception: bad
 //! input to `ValueError` (through `_InputError`, which carries the argument and the element so

@@ -5,7 +5,6 @@ use crate::error::Error;
 use pyo3::prelude::*;
 use rayon::prelude::*;
 use std::ops::Range;
-use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 /// Elements per thread in one chunk. Between chunks the GIL is taken back to check for Ctrl-C:
@@ -107,16 +106,15 @@ where
         out: Vec::with_capacity(n),
     };
     drive(py, n, &mut sink)?;
-    // every one is Ok here; the same allocation reused (in place)
-    Ok(sink.out.into_iter().collect::<Result<Vec<T>, Error>>()?)
+    Ok(sink.out)
 }
 
-/// [`map`]'s results, written once where they end (a chunk's on all cores, rayon's
-/// `par_extend`): a million table answers moved through a second vector cost a tenth of the
-/// call, on one thread.
+/// [`map`]'s results: each chunk's collected on all cores, then moved into `out` (a vector of
+/// exactly the results' size: numpy keeps it). The threshold functions, whose millions of
+/// table answers this move would slow by a tenth, use [`map_rows`].
 struct Collect<'f, T, F> {
     f: &'f F,
-    out: Vec<Result<T, Error>>,
+    out: Vec<T>,
 }
 
 impl<T, F> Sink for Collect<'_, T, F>
@@ -125,28 +123,16 @@ where
     F: Fn(usize) -> Result<T, Error> + Sync + Send,
 {
     fn one(&mut self, i: usize) -> Result<(), Error> {
-        self.out.push(Ok((self.f)(i)?));
+        self.out.push((self.f)(i)?);
         Ok(())
     }
 
     fn many(&mut self, range: Range<usize>) -> Result<(), Error> {
-        let failed = AtomicBool::new(false);
-        let from = self.out.len();
-        self.out.par_extend(range.into_par_iter().map(|i| {
-            let r = (self.f)(i);
-            if r.is_err() {
-                failed.store(true, Ordering::Relaxed);
-            }
-            r
-        }));
-        match failed.into_inner() {
-            false => Ok(()),
-            true => Err(self
-                .out
-                .drain(from..)
-                .find_map(Result::err)
-                .unwrap_or_else(|| Error::Solver("an element failed without an error".into()))),
+        let part: Vec<Result<T, Error>> = range.into_par_iter().map(self.f).collect();
+        for r in part {
+            self.out.push(r?);
         }
+        Ok(())
     }
 }
 
@@ -164,13 +150,18 @@ pub struct Columns {
     pub warnings: Warned,
 }
 
-/// Elements a thread computes in one piece in [`map_rows`], writing their rows into every
-/// column.
+/// The most elements a thread computes in one piece in [`map_rows`], writing their rows into
+/// every column; a chunk is cut into at least four blocks a thread, so that a chunk of slow
+/// elements (searches: a chunk is 20 ms of work) is still shared among the threads.
 const BLOCK: usize = 4096;
 
-/// `f(0), ..., f(n - 1)` as [`map`] computes them, each row written straight into its columns
-/// (41 bytes an element for five columns, against the 80 of a row kept first and copied into
-/// columns after: page faults of fresh memory were a sixth of a million table answers).
+/// Blocks a thread at least, of a chunk (for rayon to balance).
+const BLOCKS_PER_THREAD: usize = 4;
+
+/// `f(0), ..., f(n - 1)` on all cores as [`drive`] computes them, each row written straight
+/// into its columns (41 bytes an element for five columns, against the 80 of a row kept first
+/// and copied into columns after: page faults of fresh memory were a sixth of a million table
+/// answers).
 pub fn map_rows<const N: usize, F>(py: Python<'_>, n: usize, f: F) -> PyResult<Columns>
 where
     F: Fn(usize) -> Result<Row<N>, Error> + Sync + Send,
@@ -217,16 +208,21 @@ where
             codes,
             warnings,
         } = &mut self.columns;
+        let threads = rayon::current_num_threads().max(1);
+        let block = range
+            .len()
+            .div_ceil(threads * BLOCKS_PER_THREAD)
+            .clamp(1, BLOCK);
         let mut pieces: Vec<_> = values
             .iter_mut()
-            .map(|c| c[range.clone()].chunks_mut(BLOCK))
+            .map(|c| c[range.clone()].chunks_mut(block))
             .collect();
         let blocks: Vec<Block> = codes[range.clone()]
-            .chunks_mut(BLOCK)
+            .chunks_mut(block)
             .enumerate()
             .map(|(b, codes)| {
                 let parts = pieces.iter_mut().filter_map(Iterator::next).collect();
-                (range.start + b * BLOCK, parts, codes)
+                (range.start + b * block, parts, codes)
             })
             .collect();
         let f = self.f;
