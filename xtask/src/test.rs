@@ -3,7 +3,7 @@
 //!
 //! 1. `cargo test --workspace` (which also builds the `stickiness` binary), then
 //!    `cargo xtask master-table --check` and `cargo xtask restitution-table --check` (a sample
-//!    of the tables' values recomputed);
+//!    of the tables' values recomputed; in a thread beside steps 3-5 when they run);
 //! 2. made in a thread while step 1 runs (most of it waits on downloads): a virtual
 //!    environment under `target/venv` with the Python test dependencies, DustPy for the
 //!    coupling tests (its PyPI release is a source distribution built with meson and f2py, so
@@ -129,22 +129,37 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
             rust_tests(root)?;
         }
         let Some(environment) = environment else {
-            return Ok(());
+            return if parts.rust {
+                table_checks(root)
+            } else {
+                Ok(())
+            };
         };
         let venv = environment
             .join()
             .map_err(|_| "making the Python environment panicked")??;
-        python_tests(root, &venv)
+        // the tables' checks beside the Python tests, whose one thread leaves a core idle most
+        // of the time (pytest, pip, the notebook's kernel): a minute less on two cores
+        let checks = parts.rust.then(|| s.spawn(|| table_checks(root)));
+        let python = python_tests(root, &venv);
+        if let Some(checks) = checks {
+            checks.join().map_err(|_| "the tables' checks panicked")??;
+        }
+        python
     })
 }
 
-/// `cargo test --workspace`, then the master and restitution tables' checks.
+/// `cargo test --workspace`.
 fn rust_tests(root: &Path) -> Result<(), Error> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     run(Command::new(&cargo)
         .current_dir(root)
-        .args(["test", "--workspace"]))?;
-    // a change of the model must not leave the committed master tables stale
+        .args(["test", "--workspace"]))
+}
+
+/// The master and restitution tables' checks: a change of the model must not leave the
+/// committed tables stale.
+fn table_checks(root: &Path) -> Result<(), Error> {
     eprintln!("+ cargo xtask master-table --check");
     crate::master_table::run_check(root)?;
     eprintln!("+ cargo xtask restitution-table --check");
