@@ -138,10 +138,12 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
         let venv = environment
             .join()
             .map_err(|_| "making the Python environment panicked")??;
+        let wheel = install_wheel(root, &venv)?;
         // the tables' checks beside the Python tests, whose one thread leaves a core idle most
-        // of the time (pytest, pip, the notebook's kernel): a minute less on two cores
+        // of the time (pytest, pip, the notebook's kernel): a minute less on two cores; after
+        // the wheel's build, which would share the cores with them
         let checks = parts.rust.then(|| s.spawn(|| table_checks(root)));
-        let python = python_tests(root, &venv);
+        let python = python_tests(root, &venv, &wheel);
         if let Some(checks) = checks {
             checks.join().map_err(|_| "the tables' checks panicked")??;
         }
@@ -177,8 +179,8 @@ fn python_environment(root: &Path) -> Result<Venv, Error> {
     Ok(venv)
 }
 
-/// The wheel installed into `venv`, pytest, the docstrings' examples and the site.
-fn python_tests(root: &Path, venv: &Venv) -> Result<(), Error> {
+/// The CLI (for the identity tests) and the package's wheel, installed into `venv`; the wheel.
+fn install_wheel(root: &Path, venv: &Venv) -> Result<std::path::PathBuf, Error> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     // the CLI for the identity tests (already built by `cargo test`; quick otherwise)
     run(Command::new(&cargo)
@@ -189,13 +191,18 @@ fn python_tests(root: &Path, venv: &Venv) -> Result<(), Error> {
     let wheel = crate::wheel::build(root, "dev")?;
     let wheel_arg = wheel.to_string_lossy().into_owned();
     venv.pip(root, &["--force-reinstall", "--no-deps", &wheel_arg])?;
+    Ok(wheel)
+}
+
+/// pytest on the installed `wheel`, the docstrings' examples and the site.
+fn python_tests(root: &Path, venv: &Venv, wheel: &Path) -> Result<(), Error> {
     // the Rust API's docs build alongside pytest (no cargo runs until the docs step)
     let rustdoc = crate::docs::RustDoc::start(root)?;
     let cli = root.join("target").join("debug").join("stickiness");
     run(venv
         .command(root)
         .env("STICKINESS_CLI", &cli)
-        .env("STICKINESS_WHEEL", &wheel)
+        .env("STICKINESS_WHEEL", wheel)
         .env("MPLBACKEND", "Agg")
         .args(["-m", "pytest", "-q", "crates/python/tests"]))?;
     // the Examples of every docstring
