@@ -45,6 +45,22 @@ def test_empty_arrays():
     assert r.v_stick.shape == (0,)
 
 
+@pytest.mark.parametrize("bad", [(0, 1), (5, 250_000), (3000, 299_999), (299_998, 299_999)])
+def test_of_two_bad_elements_the_first_is_named(bad):
+    # the elements are computed in parallel chunks and blocks (crates/python/src/parallel.rs):
+    # whichever finishes first, the error names the lowest index, as a loop would
+    r = np.full(300_000, 60e-6)
+    r[bad[1]], r[bad[0]] = -1.0, -2.0
+    first = rf"^radius\[{bad[0]}\] = -2\.0: must be > 0"
+    for f in (st.v_stick, st.v_frag, st.jkr):
+        with pytest.raises(ValueError, match=first):
+            f(CO2, r, 1e-9) if f is not st.jkr else f(CO2, r)
+    t = np.full(300_000, 1e-9)
+    t[bad[1]], t[bad[0]] = -1.0, -2.0
+    with pytest.raises(ValueError, match=rf"^t_vis\[{bad[0]}\] = -2\.0"):
+        st.dimensionless(CO2, 60e-6, t)
+
+
 def test_bad_values_name_the_argument_and_element():
     with pytest.raises(ValueError, match=r"^radius\[1\] = nan: must be > 0 and finite \(m\)$"):
         st.v_stick(CO2, radius=[60e-6, np.nan], t_vis=1e-9)
