@@ -24,7 +24,8 @@ pub fn node_count() -> usize {
     ((ALPHA_MAX.ln() - ALPHA_MIN.ln()) / LN_ALPHA_STEP).ceil() as usize + 1
 }
 
-/// alpha at table node `i`.
+/// alpha at table node `i` (tabulated by `build.rs` with the nodes' integrals).
+#[cfg_attr(not(test), allow(dead_code))]
 pub fn node_alpha(i: usize) -> f64 {
     (ALPHA_MIN.ln() + i as f64 * LN_ALPHA_STEP).exp()
 }

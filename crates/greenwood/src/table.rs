@@ -29,8 +29,9 @@ use std::sync::{Arc, OnceLock};
 
 pub use crate::quad::{ALPHA_MAX, ALPHA_MIN, LN_ALPHA_STEP};
 
-// `J_NODES[i] = [J3, 1 - J3, K]` at `crate::quad::node_alpha(i)`, computed by `build.rs` with the
-// quadrature of `crate::quad` (the values do not depend on k).
+// `J_NODES[i] = [alpha, J3, 1 - J3, K]` at alpha = `crate::quad::node_alpha(i)`, computed by
+// `build.rs` with the quadrature of `crate::quad` (the values do not depend on k; alpha too, so
+// that a table of k costs no exponential).
 include!(concat!(env!("OUT_DIR"), "/j_nodes.rs"));
 /// Number of nodes in each interpolation stencil.
 pub const STENCIL: usize = 6;
@@ -51,7 +52,8 @@ pub struct CrackSpeed {
 struct BranchTable {
     zeta: Vec<f64>,
     w: Vec<f64>,
-    /// `newton[i]`: divided differences of the stencil of interval `[zeta[i], zeta[i+1])`.
+    /// `newton[s]`: the Newton coefficients of the stencil of nodes `s .. s + STENCIL`, the
+    /// divided differences `f[zeta_s .. zeta_(s+j)]`, `j < STENCIL`.
     newton: Vec<[f64; STENCIL]>,
     /// First node of each stencil.
     start: Vec<usize>,
@@ -67,23 +69,27 @@ impl BranchTable {
         let (zeta, w): (Vec<f64>, Vec<f64>) = points.into_iter().unzip();
         let n = zeta.len();
         let intervals = n - 1;
-        let mut newton = Vec::with_capacity(intervals);
-        let mut start = Vec::with_capacity(intervals);
-        for i in 0..intervals {
-            // the stencil centred on interval i: nodes i-2 ..= i+3, shifted inside the table
-            let s =
-                (i as isize + 1 - (STENCIL / 2) as isize).clamp(0, (n - STENCIL) as isize) as usize;
-            let xs = &zeta[s..s + STENCIL];
-            let mut dd = [0.0; STENCIL];
-            dd.copy_from_slice(&w[s..s + STENCIL]);
-            for order in 1..STENCIL {
-                for j in (order..STENCIL).rev() {
-                    dd[j] = (dd[j] - dd[j - 1]) / (xs[j] - xs[j - order]);
-                }
-            }
-            newton.push(dd);
-            start.push(s);
+        // the Newton coefficients of every stencil: the divided differences f[zeta_a ..
+        // zeta_(a+m)] of each order m, each computed once for the stencils that share it (a
+        // third of the divisions of a table per stencil, the same values); `newton[a][m]`,
+        // with the higher orders of the last nodes, which start no stencil, left unused
+        let stencils = n - STENCIL + 1;
+        let mut newton = vec![[0.0; STENCIL]; n];
+        for (d, &wa) in newton.iter_mut().zip(&w) {
+            d[0] = wa;
         }
+        for m in 1..STENCIL {
+            for a in 0..n - m {
+                newton[a][m] = (newton[a + 1][m - 1] - newton[a][m - 1]) / (zeta[a + m] - zeta[a]);
+            }
+        }
+        newton.truncate(stencils);
+        // the stencil of interval i: centred on it (nodes i-2 ..= i+3), shifted inside the table
+        let start: Vec<usize> = (0..intervals)
+            .map(|i| {
+                (i as isize + 1 - (STENCIL / 2) as isize).clamp(0, (n - STENCIL) as isize) as usize
+            })
+            .collect();
         // buckets no wider than the narrowest interval: at most one interval boundary per bucket
         let min_gap = zeta
             .windows(2)
@@ -130,8 +136,9 @@ impl BranchTable {
         while i + 1 < last && self.zeta[i + 1] <= z {
             i += 1;
         }
-        let dd = &self.newton[i];
-        let xs = &self.zeta[self.start[i]..self.start[i] + STENCIL];
+        let s = self.start[i];
+        let dd = &self.newton[s];
+        let xs = &self.zeta[s..s + STENCIL];
         // Horner on the Newton form, carrying the derivative along
         let mut value = dd[STENCIL - 1];
         let mut slope = 0.0;
@@ -229,8 +236,8 @@ impl FastBranch {
 
 /// Greenwood's crack law `v(k, beta)` for one k, evaluated by table interpolation.
 ///
-/// Make it once per k and share it: its table is built on the first evaluation (0.17 ms: the
-/// quadratures were done at build time), so a law that is never evaluated (a threshold the
+/// Make it once per k and share it: its table is built on the first evaluation (0.09 ms in a
+/// warm loop, about 0.2 ms among other work: the quadratures were done at build time), so a law that is never evaluated (a threshold the
 /// master tables answer) costs nothing. Evaluation is a cubic polynomial in a cell found from
 /// the bits of its argument (the first visit of an octave fills that octave's cells from the
 /// table). The tables sit behind an [`Arc`], so a clone (or `CrackLaw::from(&law)`) shares them,
@@ -255,8 +262,8 @@ impl Tables {
     fn new(k: f64) -> Self {
         let mut closing = Vec::with_capacity(J_NODES.len());
         let mut opening = Vec::with_capacity(J_NODES.len());
-        for (i, &[j3, one_minus_j3, k_log]) in J_NODES.iter().enumerate() {
-            let j = JIntegrals::from_parts(crate::quad::node_alpha(i), j3, one_minus_j3, k_log);
+        for &[alpha, j3, one_minus_j3, k_log] in &J_NODES {
+            let j = JIntegrals::from_parts(alpha, j3, one_minus_j3, k_log);
             for (branch, out) in [
                 (Branch::Closing, &mut closing),
                 (Branch::Opening, &mut opening),
@@ -459,8 +466,9 @@ mod tests {
     fn build_time_nodes_equal_the_quadrature() {
         assert_eq!(J_NODES.len(), node_count());
         for i in (0..J_NODES.len()).step_by(97) {
-            let (j3, m, k) = j3_complement_log_term(node_alpha(i));
-            assert_eq!(J_NODES[i], [j3, m, k], "node {i}");
+            let alpha = node_alpha(i);
+            let (j3, m, k) = j3_complement_log_term(alpha);
+            assert_eq!(J_NODES[i], [alpha, j3, m, k], "node {i}");
         }
     }
 }

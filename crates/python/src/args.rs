@@ -212,7 +212,7 @@ thread_local! {
         const { std::cell::Cell::new(None) };
 }
 
-/// One `CrackLaw` per distinct k (each table takes 0.17 ms to build and is shared), and that of
+/// One `CrackLaw` per distinct k (each table takes 0.09-0.2 ms to build and is shared), and that of
 /// the first element's k apart: most calls have one k, and comparing its bits is cheaper than
 /// hashing them for every element.
 pub struct Laws {
