@@ -71,8 +71,8 @@ impl BranchTable {
         let intervals = n - 1;
         // the Newton coefficients of every stencil: the divided differences f[zeta_a ..
         // zeta_(a+m)] of each order m, each computed once for the stencils that share it (a
-        // third of the divisions of a table per stencil, the same values); `newton[a][m]`,
-        // with the higher orders of the last nodes, which start no stencil, left unused
+        // third of the divisions of a table per stencil, the same values): `newton[a][m]`; the
+        // last STENCIL - 1 nodes start no stencil, and their rows are dropped
         let stencils = n - STENCIL + 1;
         let mut newton = vec![[0.0; STENCIL]; n];
         for (d, &wa) in newton.iter_mut().zip(&w) {
@@ -237,11 +237,12 @@ impl FastBranch {
 /// Greenwood's crack law `v(k, beta)` for one k, evaluated by table interpolation.
 ///
 /// Make it once per k and share it: its table is built on the first evaluation (0.09 ms in a
-/// warm loop, about 0.2 ms among other work: the quadratures were done at build time), so a law that is never evaluated (a threshold the
-/// master tables answer) costs nothing. Evaluation is a cubic polynomial in a cell found from
-/// the bits of its argument (the first visit of an octave fills that octave's cells from the
-/// table). The tables sit behind an [`Arc`], so a clone (or `CrackLaw::from(&law)`) shares them,
-/// with the cells filled so far, instead of copying.
+/// warm loop, about 0.2 ms among other work: the quadratures were done at build time), so a
+/// law that is never evaluated (a threshold the master tables answer) costs nothing.
+/// Evaluation is a cubic polynomial in a cell found from the bits of its argument (the first
+/// visit of an octave fills that octave's cells from the table). The tables sit behind an
+/// [`Arc`], so a clone (or `CrackLaw::from(&law)`) shares them, with the cells filled so far,
+/// instead of copying.
 #[derive(Debug, Clone)]
 pub struct CrackLaw {
     k: f64,
