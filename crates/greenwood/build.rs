@@ -1,5 +1,5 @@
-//! Tabulates `[alpha, J3, 1 - J3, K]` at the crack-law table's alpha nodes (they do not depend on k),
-//! with the crate's own quadrature kernels (`src/quad.rs`), into `$OUT_DIR/j_nodes.rs`.
+//! Tabulates `[alpha, J3, 1 - J3, K]` at the crack-law table's alpha nodes (they do not depend
+//! on k), with the crate's own quadrature kernels (`src/quad.rs`), into `$OUT_DIR/j_nodes.rs`.
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
