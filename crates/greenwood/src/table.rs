@@ -31,7 +31,8 @@ pub use crate::quad::{ALPHA_MAX, ALPHA_MIN, LN_ALPHA_STEP};
 
 // `J_NODES[i] = [alpha, J3, 1 - J3, K]` at alpha = `crate::quad::node_alpha(i)`, computed by
 // `build.rs` with the quadrature of `crate::quad` (the values do not depend on k; alpha too, so
-// that a table of k costs no exponential).
+// that a table of k costs no exponential and uses the very alpha the integrals were computed
+// at, also in a cross-compiled build).
 include!(concat!(env!("OUT_DIR"), "/j_nodes.rs"));
 /// Number of nodes in each interpolation stencil.
 pub const STENCIL: usize = 6;
