@@ -12,6 +12,35 @@ pub(crate) fn interval(xs: &[f64], x: f64) -> usize {
     }
 }
 
+/// [`interval`] in each of four arrays at once: the four searches step together, so that their
+/// loads (the rows of a stencil lie far apart in a table of megabytes) wait on memory side by
+/// side instead of one after the other. The same intervals as four calls of [`interval`].
+pub(crate) fn intervals4(xs: [&[f64]; 4], x: [f64; 4]) -> [usize; 4] {
+    // a branchless lower bound: `base` is the last node <= x (or 0), halving `size`
+    let mut base = [0usize; 4];
+    let mut size = xs.map(<[f64]>::len);
+    while size.iter().any(|&s| s > 1) {
+        for q in 0..4 {
+            if size[q] > 1 {
+                let half = size[q] / 2;
+                let mid = base[q] + half;
+                base[q] = if xs[q][mid] <= x[q] { mid } else { base[q] };
+                size[q] -= half;
+            }
+        }
+    }
+    std::array::from_fn(|q| {
+        let n = xs[q].len();
+        // the partition point: how many nodes are <= x
+        let p = base[q] + usize::from(n > 0 && xs[q][base[q]] <= x[q]);
+        match p {
+            0 => 0,
+            p if p >= n => n - 2,
+            p => p - 1,
+        }
+    })
+}
+
 /// The first of the (at most) four nodes around interval `i` of `n` nodes: `i - 1`, shifted
 /// inward at the ends so that the stencil stays inside.
 pub(crate) fn stencil_start(i: usize, n: usize) -> usize {
@@ -67,10 +96,11 @@ pub(crate) fn local_cubic(xs: &[f64], ys: &[f64], x: f64) -> f64 {
     lagrange(&xs[s..e], &ys[s..e], x)
 }
 
-/// [`local_cubic`] of two value arrays on the same nodes, with one search for the interval.
-pub(crate) fn local_cubic_both(xs: &[f64], ys: [&[f64]; 2], x: f64) -> [f64; 2] {
+/// [`local_cubic`] of two value arrays on the same nodes, in the interval `i` of `xs` that
+/// holds `x` (found once for both, by [`interval`] or [`intervals4`]).
+pub(crate) fn local_cubic_both(xs: &[f64], ys: [&[f64]; 2], x: f64, i: usize) -> [f64; 2] {
     let n = xs.len();
-    let s = stencil_start(interval(xs, x), n);
+    let s = stencil_start(i, n);
     let e = (s + 4).min(n);
     if e - s == 4 {
         let w = weights4(&xs[s..e], x);
@@ -141,6 +171,45 @@ mod tests {
             ),
             (0, 2, 1)
         );
+    }
+
+    /// The four searches in step find the intervals of four separate searches (std's
+    /// `partition_point`), for rows of different lengths, at nodes, between them, outside them
+    /// and at NaN.
+    #[test]
+    fn four_searches_in_step_find_the_same_intervals() {
+        let rows: [Vec<f64>; 4] = [
+            vec![0.0, 1.0],
+            vec![-3.0, -1.0, 0.5, 2.0, 2.5],
+            (0..37).map(|i| (i as f64).powf(1.3) - 4.0).collect(),
+            (0..200).map(|i| 0.1 * i as f64 - 7.0).collect(),
+        ];
+        let probes = [
+            -100.0,
+            -7.0,
+            -4.0,
+            -3.0,
+            -1.0,
+            0.0,
+            0.25,
+            0.5,
+            1.0,
+            2.0,
+            2.2,
+            12.9,
+            13.0,
+            1e9,
+            f64::NAN,
+        ];
+        for (a, &x0) in probes.iter().enumerate() {
+            for &x1 in &probes[a..] {
+                let x = [x0, x1, x0, x1];
+                let found = intervals4(std::array::from_fn(|q| &rows[q][..]), x);
+                for q in 0..4 {
+                    assert_eq!(found[q], interval(&rows[q], x[q]), "row {q} at {}", x[q]);
+                }
+            }
+        }
     }
 
     /// Uniform weights reproduce a cubic, give a node's value at the node, and refuse outside.

@@ -16,7 +16,9 @@
 
 use super::binary::{self, Piece, Table};
 use super::format::F_TOP;
-use super::interp::{interval, lagrange, local_cubic, local_cubic_both, stencil_start, weights4};
+use super::interp::{
+    interval, intervals4, lagrange, local_cubic, local_cubic_both, stencil_start, weights4,
+};
 
 /// Which piece of the rows, and which ratio.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -173,10 +175,17 @@ impl Table {
     /// [`Table::g_plain_both`] on the rows found.
     pub(crate) fn g_plain_both_in(&self, at: RowsAt, y: f64, x: f64) -> Option<[f64; 2]> {
         let s = at.s;
+        let rows = &self.rows[s..s + 4];
+        let mut u = [0.0; 4];
+        for (u, row) in u.iter_mut().zip(rows) {
+            *u = plain_u(row, x)?;
+        }
+        // the four rows' intervals found together (their nodes lie far apart in memory)
+        let found = intervals4(std::array::from_fn(|q| &rows[q].body.u[..]), u);
         let mut g = [[0.0; 4]; 2];
-        for (q, row) in self.rows[s..s + 4].iter().enumerate() {
-            let (u, p) = (plain_u(row, x)?, &row.body);
-            let [a, b] = local_cubic_both(&p.u, [&p.g[0], &p.g[1]], u);
+        for (q, row) in rows.iter().enumerate() {
+            let p = &row.body;
+            let [a, b] = local_cubic_both(&p.u, [&p.g[0], &p.g[1]], u[q], found[q]);
             (g[0][q], g[1][q]) = (a, b);
         }
         // the weights of the four rows at y once for both ratios (lagrange's sum, term for term)
