@@ -143,14 +143,19 @@ pub struct Contact {
     material: Material,
     geometry: Geometry,
     epsilon: f64,
-    /// The JKR units, computed once: every answer from the master tables asks for them (two
-    /// cube roots and a power each time they were recomputed).
+    /// The JKR units and the quantities they are made of, computed once: every answer from
+    /// the master tables asks for them (two cube roots, a power and some fifteen divisions each
+    /// time they were recomputed).
     units: Units,
 }
 
-/// The JKR units of a contact (SI): a_eq (m), t0 (s), V_stick,JKR (m/s).
+/// The JKR units of a contact (SI): a_eq (m), t0 (s), V_stick,JKR (m/s), with R (m), m* (kg)
+/// and E* (Pa).
 #[derive(Debug, Clone, Copy, PartialEq)]
 struct Units {
+    reduced_radius: f64,
+    m_star: f64,
+    e_star: f64,
     a_eq: f64,
     t0: f64,
     v_stick_jkr: f64,
@@ -190,21 +195,24 @@ impl Contact {
 
     /// The contact with its units computed (epsilon = [`SURFACE_FORCE_RANGE`]; not validated).
     fn with_units(material: Material, geometry: Geometry) -> Self {
+        let nu = material.poisson;
         let mut c = Self {
             material,
             geometry,
             epsilon: SURFACE_FORCE_RANGE,
             units: Units {
+                reduced_radius: geometry.reduced_radius(),
+                m_star: geometry.reduced_mass(material.density),
+                e_star: material.young / (2.0 * (1.0 - nu * nu)),
                 a_eq: f64::NAN,
                 t0: f64::NAN,
                 v_stick_jkr: f64::NAN,
             },
         };
-        c.units = Units {
-            a_eq: c.compute_a_eq(),
-            t0: c.compute_t0(),
-            v_stick_jkr: c.compute_v_stick_jkr(),
-        };
+        // from R, m* and E* above
+        c.units.a_eq = c.compute_a_eq();
+        c.units.t0 = c.compute_t0();
+        c.units.v_stick_jkr = c.compute_v_stick_jkr();
         c
     }
 
@@ -244,13 +252,12 @@ impl Contact {
 
     /// Reduced radius R = R1 R2/(R1 + R2) (m): R1/2 for identical spheres, R1 on a wall.
     pub fn reduced_radius(&self) -> f64 {
-        self.geometry.reduced_radius()
+        self.units.reduced_radius
     }
 
     /// Contact modulus E* = E / (2 (1 - nu^2)) (Pa).
     pub fn e_star(&self) -> f64 {
-        let nu = self.material.poisson;
-        self.material.young / (2.0 * (1.0 - nu * nu))
+        self.units.e_star
     }
 
     /// Mass of the (first) particle m1 = 4 pi rho R1^3 / 3 (kg).
@@ -260,7 +267,7 @@ impl Contact {
 
     /// Reduced mass m* = m1 m2/(m1 + m2) (kg): m1/2 for identical spheres, m1 on a wall.
     pub fn m_star(&self) -> f64 {
-        self.geometry.reduced_mass(self.material.density)
+        self.units.m_star
     }
 
     /// Work of adhesion gamma = 2 gamma_SV (J/m^2).
