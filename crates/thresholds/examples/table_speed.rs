@@ -9,29 +9,24 @@
 //! prints the time a point over five passes, how many the tables answered and the sum of their
 //! V_stick / V_stick,JKR (the same digits before and after a change that keeps the numbers).
 
-#![allow(clippy::unwrap_used)]
+#![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use std::time::Instant;
 use thresholds::master::MasterTables;
 use thresholds::{Contact, Geometry, Material, SearchOptions};
 
+#[path = "common/domain.rs"]
+#[allow(dead_code)] // the examples of the tables' accuracy read the rest
+mod domain;
+
 /// Points drawn.
 const POINTS: usize = 1_000_000;
 
 fn main() {
-    // xorshift64: the same points on every machine, without a dependency
-    let mut state: u64 = 12345;
-    let mut uniform = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    // the same points on every run (the examples' deterministic generator)
+    let mut rng = domain::Rng(12345);
     let points: Vec<(f64, f64)> = (0..POINTS)
-        .map(|_| {
-            let r1 = 10f64.powf(-7.0 + 4.0 * uniform());
-            (r1, 10f64.powf(-14.0 + 8.0 * uniform()))
-        })
+        .map(|_| (rng.log_uniform(1e-7, 1e-3), rng.log_uniform(1e-14, 1e-6)))
         .collect();
     let tables = MasterTables::standard();
     let opts = SearchOptions::default();

@@ -4,8 +4,13 @@
 /// The index `i` of the interval `[xs[i], xs[i + 1]]` that holds `x` (`xs` increasing, at least
 /// two nodes), clamped to the first and last intervals.
 pub(crate) fn interval(xs: &[f64], x: f64) -> usize {
-    let n = xs.len();
-    match xs.partition_point(|&v| v <= x) {
+    interval_of(xs.partition_point(|&v| v <= x), xs.len())
+}
+
+/// The interval of `n` nodes whose partition point (how many nodes are <= x) is `p`, clamped
+/// to the first and last intervals.
+fn interval_of(p: usize, n: usize) -> usize {
+    match p {
         0 => 0,
         p if p >= n => n - 2,
         p => p - 1,
@@ -32,12 +37,7 @@ pub(crate) fn intervals4(xs: [&[f64]; 4], x: [f64; 4]) -> [usize; 4] {
     std::array::from_fn(|q| {
         let n = xs[q].len();
         // the partition point: how many nodes are <= x
-        let p = base[q] + usize::from(n > 0 && xs[q][base[q]] <= x[q]);
-        match p {
-            0 => 0,
-            p if p >= n => n - 2,
-            p => p - 1,
-        }
+        interval_of(base[q] + usize::from(n > 0 && xs[q][base[q]] <= x[q]), n)
     })
 }
 
