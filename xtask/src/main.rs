@@ -38,11 +38,13 @@ enum Command {
         check: bool,
         /// Build only this part: the end curves, the tables (on the committed end curves), the
         /// checks between tables of neighbouring k, the committed tables vouched closer to
-        /// their ends (`revouch`, no new nodes; then `kcheck`), or their rows that are not
+        /// their ends (`revouch`, no new nodes; then `kcheck`), their lower-bound limits
+        /// closer still (`bounds`, no new nodes: where the default search strays from the
+        /// nodes, for the verdict "above the search limit"), or their rows that are not
         /// monotone checked for no bouncing beyond their ends (`beyond`, no new nodes).
         #[arg(long, value_enum, default_value = "all")]
         part: xtask::master_table::Part,
-        /// With `--part tables`, `revouch` or `beyond`: only the tables of these indices (k = 0.005 2^(i/3)).
+        /// With `--part tables`, `revouch`, `bounds` or `beyond`: only the tables of these indices (k = 0.005 2^(i/3)).
         #[arg(long, value_delimiter = ',')]
         only: Vec<usize>,
         /// With `--part tables`: the lowest row, instead of y = -6 (log10 c_D c_a). Below -4.5

@@ -1,4 +1,4 @@
-//! `cargo xtask master-table [--part ends|tables|kcheck|revouch|beyond] [--check]`: build the master tables of
+//! `cargo xtask master-table [--part ends|tables|kcheck|revouch|bounds|beyond] [--check]`: build the master tables of
 //! V_stick / V_stick,JKR with the exact search and write them to `crates/thresholds/data/`
 //! (`master_ends.csv`, the end curves and the checks between tables of neighbouring k;
 //! `master_k<k>.csv`, one table a k), or recompute a sample of their nodes and end points and
@@ -15,7 +15,7 @@ use thresholds::master::build::check::{
 };
 use thresholds::master::build::ends::{build_ends, repair_ends};
 use thresholds::master::build::kcheck::k_checks;
-use thresholds::master::build::revouch::revouch_table;
+use thresholds::master::build::revouch::{revouch_table, Pass};
 use thresholds::master::build::BuildConfig;
 use thresholds::master::format::{parse_ends, parse_table, EndsData, TableData};
 use thresholds::master::{ends_to_text, table_to_text};
@@ -49,6 +49,9 @@ pub enum Part {
     Kcheck,
     /// The committed tables vouched closer to their ends (no new nodes; then `kcheck`).
     Revouch,
+    /// The committed tables' lower-bound limits closer to their ends, checked against the exact
+    /// nodes where the default search strays from them (no new nodes; after `revouch`).
+    Bounds,
     /// The committed tables' rows that are not monotone checked for no bouncing beyond their
     /// ends up to where their ratios stop increasing (no new nodes).
     Beyond,
@@ -213,7 +216,11 @@ pub fn run_build(
             let passes: Vec<String> = from.as_ref().map_or(Vec::new(), |t| {
                 t.header
                     .iter()
-                    .filter(|h| h.starts_with("revouched:") || h.starts_with("beyond:"))
+                    .filter(|h| {
+                        ["revouched:", "bounds:", "beyond:"]
+                            .iter()
+                            .any(|p| h.starts_with(p))
+                    })
                     .cloned()
                     .collect()
             });
@@ -235,7 +242,7 @@ pub fn run_build(
             write_table(root, &t, &progress)?;
         }
     }
-    if matches!(part, Part::Revouch | Part::Beyond) {
+    if matches!(part, Part::Revouch | Part::Bounds | Part::Beyond) {
         let ends = committed_ends(root)?;
         for t in committed_tables(root)? {
             let i = cfg
@@ -245,10 +252,10 @@ pub fn run_build(
             if !only.is_empty() && !i.is_some_and(|i| only.contains(&i)) {
                 continue;
             }
-            let mut t = if part == Part::Revouch {
-                revouch_table(&cfg, &t, &ends, &progress)?
-            } else {
-                check_beyond_table(&cfg, &t, &progress)?
+            let mut t = match part {
+                Part::Revouch => revouch_table(&cfg, &t, &ends, Pass::Revouch, &progress)?,
+                Part::Bounds => revouch_table(&cfg, &t, &ends, Pass::Bounds, &progress)?,
+                _ => check_beyond_table(&cfg, &t, &progress)?,
             };
             stamp(&mut t.header);
             write_table(root, &t, &progress)?;

@@ -10,7 +10,10 @@
 //!    [`K_STENCIL_EDGE`] in the end intervals) gives g = ln(F - 1) at (y, u = ln(x_s - x))
 //!    where vouched, and the polynomial in ln k through them (quintic; sextic in the end
 //!    intervals) combines them; closer to x_s than vouched, F is at least its value at the
-//!    closest vouched distance (the rows' ratios increase towards the end);
+//!    closest vouched distance (the rows' ratios increase towards the end), or, where the
+//!    table was checked against its exact nodes closer still (its `d_lb`: there the default
+//!    search strays from them by more than the tables promise), at least its value there,
+//!    which says "above the search limit" only with the wider [`BOUND_MARGIN`];
 //! 3. F_on likewise, on the strip (w = ln(x_on - x)) for x within half a strip of x_s, on the
 //!    body elsewhere;
 //! 4. each ratio is compared with f_max: clearly below (an answer), clearly above (no
@@ -18,6 +21,7 @@
 //!    decides).
 
 use super::binary::Table;
+use super::format::CELL_LIMITS;
 use super::interp::lagrange_weight;
 use super::table::{Curve, Levels, RowsAt};
 use super::MasterTables;
@@ -25,6 +29,14 @@ use super::MasterTables;
 /// A table answer is given only where a ratio is clearly on one side of the search limit
 /// f_max: within this relative distance of it the exact search decides.
 pub const V_MAX_MARGIN: f64 = 1e-4;
+
+/// A lower bound read closer to the end than the tables vouch for values
+/// ([`super::format::PieceData::d_lb`]) says "above the search limit" only where it exceeds
+/// f_max by this (relative). There the interpolation is within the build's 2e-6 of the exact
+/// nodes, but the default search strays from them by up to 1.4e-4 (near the cliff of CO2-like
+/// rows, where V_out is nearly flat in V_in; the build's `--part bounds` stops where it strays
+/// by more than 1e-3): seventy times that scatter, so that the verdict is the default search's.
+pub const BOUND_MARGIN: f64 = 1e-2;
 
 /// Two k closer than this (relative) are the same k: a query at a table's own k uses that table
 /// alone.
@@ -57,12 +69,28 @@ enum Side {
     Unknown,
 }
 
-/// `g = ln(ratio - 1)` vouched for, or a lower bound of it.
+/// `g = ln(ratio - 1)` vouched for, or a lower bound of it with the margin its verdict needs
+/// ([`V_MAX_MARGIN`], or [`BOUND_MARGIN`] for the bounds checked against the exact nodes only).
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Eval {
     Value(f64),
-    AtLeast(f64),
+    AtLeast { g: f64, margin: f64 },
     Unknown,
+}
+
+impl Eval {
+    /// Of two lower bounds, the one that says the most (the larger ratio over its margin).
+    fn stronger(self, other: Eval) -> Eval {
+        let reach = |e: Eval| match e {
+            Eval::AtLeast { g, margin } => (1.0 + g.exp()) / (1.0 + margin),
+            _ => f64::NEG_INFINITY,
+        };
+        if reach(other) > reach(self) {
+            other
+        } else {
+            self
+        }
+    }
 }
 
 fn side(e: Eval, f_max: f64) -> Side {
@@ -77,7 +105,7 @@ fn side(e: Eval, f_max: f64) -> Side {
                 Side::Unknown
             }
         }
-        Eval::AtLeast(g) if 1.0 + g.exp() > f_max * (1.0 + V_MAX_MARGIN) => Side::Above,
+        Eval::AtLeast { g, margin } if 1.0 + g.exp() > f_max * (1.0 + margin) => Side::Above,
         _ => Side::Unknown,
     }
 }
@@ -207,7 +235,7 @@ impl MasterTables {
 
     /// The k check of the stencil's interval at `y` (`Some(None)` at a table's own k), `None`
     /// where the interval was not checked there.
-    fn check_of(&self, ks: &KStencil, y: f64) -> Option<Option<[f64; 5]>> {
+    fn check_of(&self, ks: &KStencil, y: f64) -> Option<Option<[f64; CELL_LIMITS]>> {
         match ks.interval {
             Some(i) => self.k_check(i, y).map(Some),
             None => Some(None),
@@ -245,7 +273,11 @@ impl MasterTables {
         };
         // towards the end a ratio is at least its value at a point farther from it, up to the
         // level where the rows stop increasing
-        let at_least = |g: f64| Eval::AtLeast(g.min((ks.levels.mono - 1.0).ln()));
+        let bound = |g: f64, margin: f64| Eval::AtLeast {
+            g: g.min((ks.levels.mono - 1.0).ln()),
+            margin,
+        };
+        let at_least = |g: f64| bound(g, V_MAX_MARGIN);
         // plain: vouched up to x_hi
         let plain = plain_limit(ks, check, curve);
         let g_plain = |x: f64| {
@@ -266,12 +298,15 @@ impl MasterTables {
                 Curve::OnsetStrip => 4,
             };
             let (mut lo, mut hi) = (check.map_or(f64::NEG_INFINITY, |k| k[c]), f64::INFINITY);
+            // the k checks hold no deeper limit for lower bounds: theirs is their `lo`
+            let mut lb = check.map_or(f64::NEG_INFINITY, |k| k[c]);
             let mut vouched = true;
             for (t, at) in ks.tables_at() {
                 match t.vouched_in(at, curve) {
                     Some((l, h)) => {
                         lo = lo.max(l);
                         hi = hi.min(h);
+                        lb = lb.max(t.bound_in(at, curve));
                     }
                     None => vouched = false,
                 }
@@ -287,10 +322,16 @@ impl MasterTables {
                 if u >= lo {
                     return at(u).map_or(Eval::Unknown, Eval::Value);
                 }
-                if lo.is_finite() {
-                    if let Some(g) = at(lo) {
-                        return at_least(g);
-                    }
+                // closer to the end than vouched: at least the value at the closest vouched
+                // point; where the rows and cells were checked against the exact nodes closer
+                // still (down to lb), at least the value at u or lb, with the wider margin
+                let near = lo.is_finite().then(|| at(lo)).flatten().map(at_least);
+                let deep = (lb < lo).then(|| at(u.max(lb))).flatten();
+                let deep = deep.map(|g| bound(g, BOUND_MARGIN));
+                match (near, deep) {
+                    (Some(a), Some(b)) => return a.stronger(b),
+                    (Some(e), None) | (None, Some(e)) => return e,
+                    (None, None) => {}
                 }
             }
         }
@@ -399,7 +440,7 @@ const PLAIN_INSIDE: f64 = 0.01;
 
 /// The plain limit of `curve` over the stencil's tables and the k check (x vouched up to it);
 /// `None` where a table has none (and for the strip, which has no plain form).
-fn plain_limit(ks: &KStencil, check: Option<[f64; 5]>, curve: Curve) -> Option<f64> {
+fn plain_limit(ks: &KStencil, check: Option<[f64; CELL_LIMITS]>, curve: Curve) -> Option<f64> {
     if curve == Curve::OnsetStrip {
         return None;
     }

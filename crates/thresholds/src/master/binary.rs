@@ -6,7 +6,7 @@
 //! [`crate::bytes`]) from the committed text, read by the library on first use; `std` and
 //! `bytemuck` only.
 
-use super::format::{CellData, EndsData, PieceData, TableData};
+use super::format::{CellData, EndsData, PieceData, TableData, CELL_LIMITS};
 use crate::bytes::{self, Reader, Writer};
 use std::borrow::Cow;
 
@@ -25,6 +25,8 @@ pub struct Piece {
     pub u_lo: [f64; 2],
     /// `[F, F_on]`: vouched for x <= this (`end - d_lo`; kept to spare an `exp` per answer).
     pub x_hi: [f64; 2],
+    /// `[F, F_on]`: a lower bound for u >= this (ln of the piece's `d_lb`, else `u_lo`).
+    pub u_lb: [f64; 2],
 }
 
 impl Piece {
@@ -41,6 +43,7 @@ impl Piece {
             ],
             u_lo: [p.d_lo[0].ln(), p.d_lo[1].ln()],
             x_hi: [end - p.d_lo[0], end - p.d_lo[1]],
+            u_lb: [p.bound_limit(0).ln(), p.bound_limit(1).ln()],
         }
     }
 
@@ -85,8 +88,9 @@ pub struct Table {
     /// The rows.
     pub rows: Vec<Row>,
     /// Per cell ([`CellData::limits`]): `[x_hi F, x_hi F_on]` (plain x, vouched for x <= this)
-    /// and `[body F, body F_on, strip F_on]` (at a fixed distance, vouched for u >= this).
-    pub cells: Vec<[f64; 5]>,
+    /// and `[body F, body F_on, strip F_on]` (at a fixed distance, vouched for u >= this), then
+    /// the same three as lower bounds only.
+    pub cells: Vec<[f64; CELL_LIMITS]>,
     /// The cell of each bin of y, 1/[`Y_BINS`] wide from the first row ([`y_bins`]): the cell of
     /// a y without a search.
     pub y_bins: Vec<u32>,
@@ -149,7 +153,7 @@ impl Table {
 }
 
 /// The binary form's first bytes.
-const MAGIC: &[u8; 8] = b"STKMT005";
+const MAGIC: &[u8; 8] = b"STKMT006";
 
 impl Piece {
     fn write(&self, w: &mut Writer) {
@@ -160,6 +164,8 @@ impl Piece {
         w.f(self.u_lo[1]);
         w.f(self.x_hi[0]);
         w.f(self.x_hi[1]);
+        w.f(self.u_lb[0]);
+        w.f(self.u_lb[1]);
     }
 
     fn read(r: &mut Reader<'static>) -> Option<Piece> {
@@ -168,6 +174,7 @@ impl Piece {
             g: [r.fs_borrowed()?, r.fs_borrowed()?],
             u_lo: [r.f()?, r.f()?],
             x_hi: [r.f()?, r.f()?],
+            u_lb: [r.f()?, r.f()?],
         })
     }
 }
@@ -192,7 +199,12 @@ pub fn to_bytes(tables: &[TableData], ends: &EndsData) -> Vec<u8> {
     e.f(ends.kcheck_y.0);
     e.f(ends.kcheck_y.1);
     e.n(ends.kcheck_y.2);
-    let flat: Vec<f64> = ends.kcheck.iter().flat_map(CellData::numbers).collect();
+    // the k checks have no lower-bound limits: five numbers each
+    let flat: Vec<f64> = ends
+        .kcheck
+        .iter()
+        .flat_map(|c| c.numbers().into_iter().take(5))
+        .collect();
     e.fs(&flat);
     bytes::to_bytes(MAGIC, &e.0, &encoded)
 }
@@ -261,7 +273,13 @@ pub fn table_from_bytes(bytes: &'static [u8], i: usize) -> Option<Table> {
         })
     })?;
     let cells = (0..rows.len().saturating_sub(1))
-        .map(|_| Some([r.f()?, r.f()?, r.f()?, r.f()?, r.f()?]))
+        .map(|_| {
+            let mut c = [0.0; CELL_LIMITS];
+            for v in &mut c {
+                *v = r.f()?;
+            }
+            Some(c)
+        })
         .collect::<Option<Vec<_>>>()?;
     let ys: Vec<f64> = rows.iter().map(|r| r.y).collect();
     Some(Table {

@@ -59,15 +59,23 @@ pub fn table_to_text(t: &TableData) -> String {
             let _ = write!(out, ",{}", number(r.none_beyond));
         }
         out.push('\n');
-        let _ = writeln!(
+        let _ = write!(
             out,
             "body,{},{}",
             number(r.body.d_lo[0]),
             number(r.body.d_lo[1])
         );
+        if let Some(d) = r.body.d_lb {
+            let _ = write!(out, ",{},{}", number(d[0]), number(d[1]));
+        }
+        out.push('\n');
         piece(&mut out, &r.body, false);
         if !r.strip.x.is_empty() {
-            let _ = writeln!(out, "strip,{}", number(r.strip.d_lo[1]));
+            let _ = write!(out, "strip,{}", number(r.strip.d_lo[1]));
+            if let Some(d) = r.strip.d_lb {
+                let _ = write!(out, ",{}", number(d[1]));
+            }
+            out.push('\n');
             piece(&mut out, &r.strip, true);
         }
         if let Some(c) = t.cells.get(j) {
@@ -153,5 +161,26 @@ mod tests {
         let levels: Vec<f64> = t.rows.iter().map(|r| r.none_beyond).collect();
         assert_eq!(levels, [9989.5, F_TOP, 0.0]);
         assert_eq!(parse_table(&table_to_text(&t)).unwrap(), t);
+    }
+
+    /// The lower-bound limits (`d_lb`) are optional trailing numbers of the body, strip and cell
+    /// records: read where given, written back the same, absent (the vouched limits serve)
+    /// where not, so that tables without them keep their text.
+    #[test]
+    fn lower_bound_limits_round_trip() {
+        let text = "k,0.01\nrow,0,0.4,0.41,1\nbody,1e-4,2e-4,1e-5,1.5e-5\nnode,0.3,5,4\n\
+                    strip,3e-4,2e-5\nsnode,0.405,900\ncell,0.3,0.3,1e-4,2e-4,3e-4,1e-5,2e-5,3e-5\n\
+                    row,0.5,0.5,0.51,1\nbody,1e-4,2e-4\nnode,0.4,5,4\n";
+        let t = parse_table(text).unwrap();
+        let (a, b) = (&t.rows[0], &t.rows[1]);
+        assert_eq!(a.body.d_lb, Some([1e-5, 1.5e-5]));
+        assert_eq!(a.strip.d_lb, Some([f64::INFINITY, 2e-5]));
+        assert_eq!(t.cells[0].d_lb, Some([1e-5, 2e-5, 3e-5]));
+        assert_eq!((b.body.d_lb, b.body.bound_limit(1)), (None, 2e-4));
+        assert_eq!(t.cells[0].bound_limit(2), 3e-5);
+        // compared as text: a strip's F is NaN, which equals nothing
+        let again = table_to_text(&t);
+        assert_eq!(table_to_text(&parse_table(&again).unwrap()), again);
+        assert!(again.contains("\nbody,0.0001,0.0002\n"), "{again}");
     }
 }

@@ -7,16 +7,21 @@
 //! ```text
 //! k,<k>
 //! row,<y>,<x_s>,<x_on>,<monotone 0|1>[,<none_beyond>]       a row of constant y = log10(c_D c_a)
-//! body,<d_lo F>,<d_lo F_on>                                 the row's body (d = x_s - x)
+//! body,<d_lo F>,<d_lo F_on>[,<d_lb F>,<d_lb F_on>]          the row's body (d = x_s - x)
 //! node,<x>,<F>,<F_on>                                        x = log10 c_D, F = V_stick/V_stick,JKR
-//! strip,<d_lo F_on>                                         the row's strip (d = x_on - x)
+//! strip,<d_lo F_on>[,<d_lb F_on>]                           the row's strip (d = x_on - x)
 //! snode,<x>,<F_on>
-//! cell,<x_hi F>,<x_hi F_on>,<d_lo F>,<d_lo F_on>,<d_lo strip F_on>   between this row and the next
+//! cell,<x_hi F>,<x_hi F_on>,<d_lo F>,<d_lo F_on>,<d_lo strip F_on>[,<d_lb F>,<d_lb F_on>,<d_lb strip F_on>]
+//!                                                            between this row and the next
 //! ```
 //! x_s is where F reaches [`F_TOP`], x_on where F_on does. A piece is vouched for where its
 //! distance to its end is at least its `d_lo` (`inf`: nowhere). A cell is vouched for in plain
 //! x (rows interpolated at the same x) up to `x_hi`, and at a fixed distance to the end (the
-//! end interpolated in y) down to `d_lo`.
+//! end interpolated in y) down to `d_lo`. The optional `d_lb` (`cargo xtask master-table --part
+//! bounds`; absent: `d_lo`) reach closer to the end for lower bounds only: there the
+//! interpolation was checked against the exact nodes but the default search strays from them
+//! by more than the tables promise, so the tables answer only "above the search limit" from it
+//! ([`super::answer`], `BOUND_MARGIN`).
 //!
 //! The end curves x_s(y, k) and x_on(y, k) on a uniform grid in y and ln k:
 //! ```text
@@ -49,6 +54,18 @@ pub struct PieceData {
     /// `[F, F_on]`: the interpolation is vouched for where the distance to the piece's end is at
     /// least this (infinite: nowhere).
     pub d_lo: [f64; 2],
+    /// `[F, F_on]`: closer to the end than `d_lo`, the interpolation is within the build's
+    /// tolerance of the exact nodes down to this distance (`--part bounds`), a lower bound
+    /// only; `None`: `d_lo`.
+    pub d_lb: Option<[f64; 2]>,
+}
+
+impl PieceData {
+    /// The distance to the end down to which ratio `v` (0: F, 1: F_on) serves as a lower
+    /// bound: `d_lb`, else `d_lo`.
+    pub fn bound_limit(&self, v: usize) -> f64 {
+        self.d_lb.map_or(self.d_lo[v], |d| d[v])
+    }
 }
 
 /// One row of constant y.
@@ -119,6 +136,9 @@ pub struct CellData {
     /// `[body F, body F_on, strip F_on]` at a fixed distance to the end: vouched for where the
     /// distance is at least this (`inf`: nowhere).
     pub d_lo: [f64; 3],
+    /// `[body F, body F_on, strip F_on]`: checked against the exact nodes down to this
+    /// distance, for lower bounds only (see [`PieceData::d_lb`]); `None`: `d_lo`.
+    pub d_lb: Option<[f64; 3]>,
 }
 
 impl CellData {
@@ -126,38 +146,55 @@ impl CellData {
     pub const NONE: CellData = CellData {
         x_hi: [f64::NEG_INFINITY; 2],
         d_lo: [f64::INFINITY; 3],
+        d_lb: None,
     };
 
-    /// As five numbers: `x_hi` then `d_lo`.
-    pub fn numbers(&self) -> [f64; 5] {
-        [
+    /// As five numbers, `x_hi` then `d_lo`, and `d_lb` after them where it is given.
+    pub fn numbers(&self) -> Vec<f64> {
+        let mut v = vec![
             self.x_hi[0],
             self.x_hi[1],
             self.d_lo[0],
             self.d_lo[1],
             self.d_lo[2],
-        ]
+        ];
+        v.extend(self.d_lb.into_iter().flatten());
+        v
     }
 
-    /// From five numbers ([`CellData::numbers`]).
+    /// From five or eight numbers ([`CellData::numbers`]).
     pub fn from_numbers(v: &[f64]) -> CellData {
         CellData {
             x_hi: [v[0], v[1]],
             d_lo: [v[2], v[3], v[4]],
+            d_lb: (v.len() == 8).then(|| [v[5], v[6], v[7]]),
         }
     }
 
-    /// The interpolation form: `[x_hi F, x_hi F_on, u_lo F, u_lo F_on, u_lo strip]` (u = ln d).
-    pub fn limits(&self) -> [f64; 5] {
+    /// The distance down to which limit `c` (0: body F, 1: body F_on, 2: strip F_on) serves
+    /// as a lower bound: `d_lb`, else `d_lo`.
+    pub fn bound_limit(&self, c: usize) -> f64 {
+        self.d_lb.map_or(self.d_lo[c], |d| d[c])
+    }
+
+    /// The interpolation form: `[x_hi F, x_hi F_on, u_lo F, u_lo F_on, u_lo strip, u_lb F,
+    /// u_lb F_on, u_lb strip]` (u = ln d).
+    pub fn limits(&self) -> [f64; CELL_LIMITS] {
         [
             self.x_hi[0],
             self.x_hi[1],
             self.d_lo[0].ln(),
             self.d_lo[1].ln(),
             self.d_lo[2].ln(),
+            self.bound_limit(0).ln(),
+            self.bound_limit(1).ln(),
+            self.bound_limit(2).ln(),
         ]
     }
 }
+
+/// How many numbers a cell's limits are in the interpolation form ([`CellData::limits`]).
+pub const CELL_LIMITS: usize = 8;
 
 /// The table of one k.
 #[derive(Debug, Clone, PartialEq)]
@@ -314,14 +351,16 @@ pub fn parse_table(text: &str) -> Result<TableData, FormatError> {
             }
             "body" => {
                 let j = row(&mut t)?;
-                let v = numbers(n, &rest, 2)?;
+                let v = numbers(n, &rest, if rest.len() == 4 { 4 } else { 2 })?;
                 t.rows[j].body.d_lo = [v[0], v[1]];
+                t.rows[j].body.d_lb = (v.len() == 4).then(|| [v[2], v[3]]);
                 in_strip = false;
             }
             "strip" => {
                 let j = row(&mut t)?;
-                let v = numbers(n, &rest, 1)?;
+                let v = numbers(n, &rest, if rest.len() == 2 { 2 } else { 1 })?;
                 t.rows[j].strip.d_lo = [f64::INFINITY, v[0]];
+                t.rows[j].strip.d_lb = v.get(1).map(|&d| [f64::INFINITY, d]);
                 in_strip = true;
             }
             "node" | "snode" => {
@@ -353,7 +392,7 @@ pub fn parse_table(text: &str) -> Result<TableData, FormatError> {
                 p.f_onset.push(o);
             }
             "cell" => {
-                let v = numbers(n, &rest, 5)?;
+                let v = numbers(n, &rest, if rest.len() == 8 { 8 } else { 5 })?;
                 t.cells.push(CellData::from_numbers(&v));
             }
             other => return Err(bad(n, format!("unknown record '{other}'"))),

@@ -35,7 +35,11 @@
 //!   midpoint, and the default search agrees with each node; the tables answer only where those
 //!   checks passed, and say nothing elsewhere (a thin band at the ends, where the search itself
 //!   is uncertain, and next to a change of regime of the cliff). Beyond an end a ratio exceeds
-//!   F_TOP, so below that search limit "nothing bounces" is an answer too.
+//!   F_TOP, so below that search limit "nothing bounces" is an answer too. Closer to the end
+//!   than vouched, a ratio is at least its value at the closest vouched point; and where a
+//!   table was checked against its exact nodes closer still but the default search strays
+//!   from them (`build::revouch`, `--part bounds`), at least its value there, which answers
+//!   "nothing below the search limit" with a margin of 1 % ([`BOUND_MARGIN`]).
 //! - **The JKR corner.** Where c_a > 1e8 (T_vis below about 1e-14 s for 60 um CO2, grains of a
 //!   centimetre at 1e-16 s) the exact search needs millions of steps or is refused, while F has
 //!   converged in c_a to a few 1e-7: the nodes there are computed at c_a = 1e8 and the tables
@@ -67,7 +71,7 @@ use format::EndsData;
 use std::sync::OnceLock;
 
 pub(crate) use answer::from_table;
-pub use answer::{K_STENCIL, K_STENCIL_EDGE, TABLE_REL_TOL, V_MAX_MARGIN};
+pub use answer::{BOUND_MARGIN, K_STENCIL, K_STENCIL_EDGE, TABLE_REL_TOL, V_MAX_MARGIN};
 pub use ends::{EndCurves, Ends};
 pub use file::{ends_to_text, table_to_text};
 pub use format::{FormatError, F_TOP};
@@ -180,7 +184,7 @@ impl MasterTables {
 
     /// The limits of the polynomial in ln k between tables `i` and `i + 1` at `y`, as a table's
     /// cell ([`format::CellData::limits`]); `None` where it was not checked.
-    fn k_check(&self, i: usize, y: f64) -> Option<[f64; 5]> {
+    fn k_check(&self, i: usize, y: f64) -> Option<[f64; format::CELL_LIMITS]> {
         let e: &EndsData = self.ends()?.data();
         let (y0, dy, ny) = e.kcheck_y;
         // checks made for another set of tables vouch for nothing

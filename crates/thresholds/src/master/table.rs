@@ -20,6 +20,10 @@ use super::interp::{
     interval, intervals4, lagrange, local_cubic, local_cubic_both, stencil_start, weights4,
 };
 
+/// Where a cell's lower-bound limits stand after its vouched ones
+/// ([`super::format::CellData::limits`]).
+const LOWER_BOUND_OFFSET: usize = 3;
+
 /// Which piece of the rows, and which ratio.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Curve {
@@ -108,6 +112,18 @@ impl Table {
             hi = hi.min(p.u[p.u.len() - 1]);
         }
         (lo <= hi).then_some((lo, hi))
+    }
+
+    /// The smallest u at which `curve` on the rows found is a lower bound of the ratio (the
+    /// largest of the rows' and the cell's `u_lb`: checked against the exact nodes, not against
+    /// the default search; [`super::format::PieceData::d_lb`]); at most their `u_lo`.
+    pub(crate) fn bound_in(&self, at: RowsAt, curve: Curve) -> f64 {
+        let RowsAt { s, j } = at;
+        let (v, c) = curve.indices();
+        self.rows[s..s + 4]
+            .iter()
+            .map(|row| curve.piece(row).u_lb[v])
+            .fold(self.cells[j][c + LOWER_BOUND_OFFSET], f64::max)
     }
 
     /// `g = ln(ratio - 1)` of `curve` at `y` and `u` (the log of the distance to the curve's end),

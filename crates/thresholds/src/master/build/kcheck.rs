@@ -32,6 +32,7 @@ pub fn k_checks(
     let everywhere = CellData {
         x_hi: [f64::INFINITY; 2],
         d_lo: [0.0; 3],
+        d_lb: None,
     };
     open.kcheck = vec![everywhere; tables.len().saturating_sub(1) * ny];
     let curves = EndCurves::new(open.clone());

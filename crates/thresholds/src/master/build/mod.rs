@@ -69,6 +69,13 @@ pub struct BuildConfig {
     /// to the nodes (the search at rel_tol 1e-8, collisions at rtol 1e-10); the looser check
     /// still catches a default search that found another root.
     pub agree_beyond: f64,
+    /// Where the tables serve as lower bounds only (`--part bounds`, [`revouch::Pass::Bounds`]),
+    /// the default search must lie within this of a node: 1e-3, seven times the 1.4e-4 it
+    /// strays by near the cliff of CO2-like rows, a tenth of the margin an answer from a lower
+    /// bound keeps from the search limit (`master::answer::BOUND_MARGIN`, 1e-2), so that the
+    /// verdict "above the search limit" is the default search's. It still catches a default
+    /// search that found another root.
+    pub bound_agree: f64,
     /// Nodes with both ratios below this are not compared with the default search: there (far
     /// from the cliff) the two agree to 1e-7 (`docs/performance.md`, "Accuracy").
     pub agree_from: f64,
@@ -118,6 +125,7 @@ impl BuildConfig {
             agree: 8e-6,
             agree_up_to: crate::DEFAULT_V_MAX_OVER_JKR,
             agree_beyond: 1e-4,
+            bound_agree: 1e-3,
             agree_from: 5.0,
             x_min: -17.0,
             x_step: 0.5,

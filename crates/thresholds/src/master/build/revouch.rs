@@ -15,6 +15,16 @@
 //! vouched range while both pass; then each cell whose checks had all passed down to its rows'
 //! old limit is checked on down to the new one, as a build checks it. Nothing else changes:
 //! the nodes, rows, plain-x limits and the k checks (which `--part kcheck` recomputes).
+//!
+//! `cargo xtask master-table --part bounds` ([`Pass::Bounds`]) goes on the same way from there,
+//! node after node, while the midpoint check passes and the default search lies within
+//! [`BuildConfig::bound_agree`] of the node, and writes the result as each piece's and cell's
+//! `d_lb`: where the tables are within their tolerance of the exact nodes, but the default
+//! search strays from them by more than the tables promise against it, so that they serve only
+//! as lower bounds, for the verdict "above the search limit" (`master::answer`,
+//! `BOUND_MARGIN`). Measured on the CO2-like rows near the cliff (k = 0.01, y about -0.5 to
+//! 0.7): the default search strays by 1.2e-5 to 1.4e-4 there, the rows' midpoints stay within
+//! 1e-6 of new nodes down to 1e-5 from the ends.
 
 use super::cells::{last_passing, sheared_checks, Checker};
 use super::row::interpolate;
@@ -31,12 +41,35 @@ use rayon::prelude::*;
 /// one had every check pass down to it (the text form keeps limits to the bit).
 const SAME_LIMIT: f64 = 1e-12;
 
+/// Which limit a pass moves towards the ends.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Pass {
+    /// `d_lo` (values): the midpoint checks pass and the default search agrees with the nodes
+    /// as the tables promise ([`agrees`]).
+    Revouch,
+    /// `d_lb` (lower bounds): the midpoint checks pass and the default search lies within
+    /// [`BuildConfig::bound_agree`] of the nodes.
+    Bounds,
+}
+
+impl Pass {
+    /// Whether the default search's ratio `theirs` passes against the node's `ours`.
+    fn agrees(self, cfg: &BuildConfig, theirs: Option<f64>, ours: f64) -> bool {
+        match self {
+            Pass::Revouch => agrees(cfg, theirs, ours),
+            Pass::Bounds => rel_diff(theirs, Some(ours)) <= cfg.bound_agree,
+        }
+    }
+}
+
 /// `piece` (ending at `end`) with ratio `v` vouched on past its `d_lo[v]`, node after node,
-/// while the midpoint check and the default search pass; the new `d_lo[v]`.
+/// while the midpoint check and the default search pass (`pass`'s rule); the new limit.
+#[allow(clippy::too_many_arguments)]
 fn extend_piece(
     cfg: &BuildConfig,
     law: &CrackLaw,
     cache: &Cache,
+    pass: Pass,
     y: f64,
     end: f64,
     piece: &PieceData,
@@ -66,7 +99,7 @@ fn extend_piece(
         let midpoint_ok =
             rel_diff(Some(interpolate(&nodes, end, v, u_mid)), ratio(exact)) <= cfg.tol;
         let agrees = nodes[i].1[v] < cfg.agree_from
-            || agrees(cfg, ratio(default_search(cfg, law, b, y)), nodes[i].1[v]);
+            || pass.agrees(cfg, ratio(default_search(cfg, law, b, y)), nodes[i].1[v]);
         if !(midpoint_ok && agrees) {
             break;
         }
@@ -75,37 +108,58 @@ fn extend_piece(
     vouched
 }
 
-/// The row with its pieces vouched as close to their ends as the checks allow.
-fn revouch_row(cfg: &BuildConfig, law: &CrackLaw, cache: &Cache, row: &RowData) -> RowData {
+/// The row with its pieces vouched (`pass`: as values or as lower bounds) as close to their
+/// ends as the checks allow.
+fn revouch_row(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    cache: &Cache,
+    pass: Pass,
+    row: &RowData,
+) -> RowData {
     let mut r = row.clone();
-    for v in 0..2 {
-        r.body.d_lo[v] = extend_piece(cfg, law, cache, row.y, row.x_s, &row.body, v);
+    let extend =
+        |end: f64, p: &PieceData, v: usize| extend_piece(cfg, law, cache, pass, row.y, end, p, v);
+    let body = [0, 1].map(|v| extend(row.x_s, &row.body, v));
+    let strip = [f64::INFINITY, extend(row.x_on, &row.strip, 1)];
+    match pass {
+        Pass::Revouch => {
+            (r.body.d_lo, r.strip.d_lo) = (body, strip);
+            // lower bounds reached from the old limits are computed anew (`--part bounds`)
+            (r.body.d_lb, r.strip.d_lb) = (None, None);
+        }
+        Pass::Bounds => {
+            r.body.d_lb = (body != row.body.d_lo).then_some(body);
+            r.strip.d_lb = (strip[1] != row.strip.d_lo[1]).then_some(strip);
+        }
     }
-    r.strip.d_lo[1] = extend_piece(cfg, law, cache, row.y, row.x_on, &row.strip, 1);
     r
 }
 
 /// The sheared limit `c` (0: body F, 1: body F_on, 2: strip F_on) of the pieces of the rows
-/// `s..s + 4` (the largest of their `d_lo`, as a cell check takes it).
-fn rows_limit(rows: &[RowData], s: usize, c: usize) -> f64 {
+/// `s..s + 4` (the largest of their `d_lo`, or of their lower-bound limits with `bounds`, as a
+/// cell check takes it).
+fn rows_limit(rows: &[RowData], s: usize, c: usize, bounds: bool) -> f64 {
     rows[s..s + 4]
         .iter()
         .map(|r| {
-            if c == 2 {
-                r.strip.d_lo[1]
+            let (p, v) = if c == 2 { (&r.strip, 1) } else { (&r.body, c) };
+            if bounds {
+                p.bound_limit(v)
             } else {
-                r.body.d_lo[c]
+                p.d_lo[v]
             }
         })
         .fold(f64::NEG_INFINITY, f64::max)
 }
 
-/// `table` (of k, on the end curves `ends`) vouched closer to its ends (see the module
-/// documentation); `progress` is told what is done.
+/// `table` (of k, on the end curves `ends`) vouched closer to its ends, as values or as lower
+/// bounds (`pass`; see the module documentation); `progress` is told what is done.
 pub fn revouch_table(
     cfg: &BuildConfig,
     table: &TableData,
     ends: &EndsData,
+    pass: Pass,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<TableData, ThresholdsError> {
     let law = CrackLaw::new(table.k)?;
@@ -115,14 +169,18 @@ pub fn revouch_table(
         .rows
         .par_iter()
         .map(|row| {
-            let r = revouch_row(cfg, &law, &cache, row);
+            let r = revouch_row(cfg, &law, &cache, pass, row);
+            let to = |p: &PieceData, v: usize| match pass {
+                Pass::Revouch => number(p.d_lo[v]),
+                Pass::Bounds => number(p.bound_limit(v)),
+            };
             progress(&format!(
-                "k = {}, row y = {}: vouched to d = {} / {} / {} (was {} / {} / {})",
+                "k = {}, row y = {}: {pass:?} to d = {} / {} / {} (vouched {} / {} / {})",
                 table.k,
                 r.y,
-                number(r.body.d_lo[0]),
-                number(r.body.d_lo[1]),
-                number(r.strip.d_lo[1]),
+                to(&r.body, 0),
+                to(&r.body, 1),
+                to(&r.strip, 1),
                 number(row.body.d_lo[0]),
                 number(row.body.d_lo[1]),
                 number(row.strip.d_lo[1]),
@@ -145,31 +203,54 @@ pub fn revouch_table(
                 return cell;
             }
             let s = stencil_start(j, n);
-            for c in 0..3 {
-                let (old, new) = (rows_limit(&table.rows, s, c), rows_limit(&rows, s, c));
+            let bounds = pass == Pass::Bounds;
+            let mut moved = cell.d_lo;
+            for (c, moved) in moved.iter_mut().enumerate() {
+                let old = rows_limit(&table.rows, s, c, false);
+                let new = rows_limit(&rows, s, c, bounds);
                 let passed_to_old = (cell.d_lo[c] / old - 1.0).abs() <= SAME_LIMIT;
                 if old.is_finite() && passed_to_old && new < old {
                     // the points between the new limit and the old (those at the old passed)
                     let range = (new.ln(), old.ln() - SAME_LIMIT);
-                    cell.d_lo[c] = sheared_checks(&on, &rows, j, c, range).map_or(old, |checks| {
+                    *moved = sheared_checks(&on, &rows, j, c, range).map_or(old, |checks| {
                         last_passing(&checks, new.ln(), old.ln()).exp()
                     });
                 }
             }
+            match pass {
+                Pass::Revouch => (cell.d_lo, cell.d_lb) = (moved, None),
+                Pass::Bounds => cell.d_lb = (moved != cell.d_lo).then_some(moved),
+            }
+            let d = [0, 1, 2].map(|c| number(cell.bound_limit(c).min(cell.d_lo[c])));
             progress(&format!(
-                "k = {}, cell y = {} .. {}: sheared to d = {} / {} / {}",
+                "k = {}, cell y = {} .. {}: {pass:?}, sheared to d = {} / {} / {}",
                 table.k,
                 rows[j].y,
                 rows[(j + 1).min(n - 1)].y,
-                number(cell.d_lo[0]),
-                number(cell.d_lo[1]),
-                number(cell.d_lo[2])
+                d[0],
+                d[1],
+                d[2]
             ));
             cell
         })
         .collect();
     let built = super::built_at(table);
     let mut header = table.header.clone();
+    if pass == Pass::Bounds {
+        header.retain(|h| !h.starts_with("bounds:"));
+        header.push(format!(
+            "bounds: d_lb, lower bounds only, where the midpoint checks pass to {} and the default search lies within {} of the nodes (cargo xtask master-table --part bounds, on the table of commit {built})",
+            number(cfg.tol),
+            number(cfg.bound_agree)
+        ));
+        return Ok(TableData {
+            k: table.k,
+            header,
+            rows,
+            cells,
+        });
+    }
+    header.retain(|h| !h.starts_with("bounds:"));
     header.push(format!(
         "revouched: the pieces and cells vouched on towards the ends while the midpoint checks pass to {} and the default search agrees to {} up to ratios of {}, to {} above (cargo xtask master-table --part revouch, on the table of commit {built})",
         number(cfg.tol),

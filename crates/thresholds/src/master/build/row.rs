@@ -154,6 +154,7 @@ fn piece(
         f_onset: nodes.iter().map(|n| n.1[1]).collect(),
         // vouched where the distance to the end is at least this
         d_lo: x_hi.map(|h| end - h),
+        d_lb: None,
     }
 }
 
