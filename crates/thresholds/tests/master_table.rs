@@ -9,13 +9,13 @@
 use contact::{Contact, Geometry, Material};
 use greenwood::CrackLaw;
 use thresholds::master::binary::Table;
-use thresholds::master::format::{parse_ends, parse_table};
 use thresholds::master::MasterTables;
 use thresholds::paper::MUSIOLIK_2016A;
 use thresholds::{
     fit_t_vis, sticking_thresholds, SearchOptions, StickingThresholds, ThresholdMethod,
 };
 
+mod common;
 #[path = "../examples/common/domain.rs"]
 mod domain;
 
@@ -429,19 +429,12 @@ fn the_jkr_corner_the_search_refuses() {
 /// `crates/thresholds/data/` equal what the library embeds, number for number.
 #[test]
 fn the_binary_form_is_the_committed_text() {
-    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data");
     let tables = MasterTables::standard();
-    let mut files: Vec<_> = std::fs::read_dir(&data)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.to_str().unwrap().contains("master_k"))
-        .collect();
-    files.sort();
-    assert_eq!(files.len(), tables.table_k().len());
-    for (i, p) in files.iter().enumerate() {
-        let t = parse_table(&std::fs::read_to_string(p).unwrap()).unwrap();
+    let committed = common::committed_tables();
+    assert_eq!(committed.len(), tables.table_k().len());
+    for (i, (p, t)) in committed.iter().enumerate() {
         // compared as printed: NaN (no value) equals NaN here, and every digit counts
-        let (embedded, committed) = (tables.table(i).unwrap(), Table::from_data(&t));
+        let (embedded, committed) = (tables.table(i).unwrap(), Table::from_data(t));
         let (a, b) = (format!("{embedded:?}"), format!("{committed:?}"));
         let at = a.bytes().zip(b.bytes()).position(|(x, y)| x != y);
         assert!(
@@ -452,7 +445,7 @@ fn the_binary_form_is_the_committed_text() {
             at.map(|i| &b[i.saturating_sub(80)..(i + 80).min(b.len())])
         );
     }
-    let e = parse_ends(&std::fs::read_to_string(data.join("master_ends.csv")).unwrap()).unwrap();
+    let e = common::committed_ends();
     let embedded = tables.ends().unwrap().data();
     assert_eq!(
         (
