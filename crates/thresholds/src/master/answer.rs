@@ -24,19 +24,8 @@ use super::binary::Table;
 use super::format::CELL_LIMITS;
 use super::interp::lagrange_weight;
 use super::table::{Curve, Levels, RowsAt};
+use super::verdict::{both, side, Eval, Side, BOUND_MARGIN, V_MAX_MARGIN};
 use super::MasterTables;
-
-/// A table answer is given only where a ratio is clearly on one side of the search limit
-/// f_max: within this relative distance of it the exact search decides.
-pub const V_MAX_MARGIN: f64 = 1e-4;
-
-/// A lower bound read closer to the end than the tables vouch for values
-/// ([`super::format::PieceData::d_lb`]) says "above the search limit" only where it exceeds
-/// f_max by this (relative). There the interpolation is within the build's 2e-6 of the exact
-/// nodes, but the default search strays from them by up to 1.4e-4 (near the cliff of CO2-like
-/// rows, where V_out is nearly flat in V_in; the build's `--part bounds` stops where it strays
-/// by more than 1e-3): seventy times that scatter, so that the verdict is the default search's.
-pub const BOUND_MARGIN: f64 = 1e-2;
 
 /// Two k closer than this (relative) are the same k: a query at a table's own k uses that table
 /// alone.
@@ -57,58 +46,6 @@ pub const K_STENCIL: usize = 6;
 /// checks, to 2e-6, refused it there), the sextic through seven by at most 1.9e-6 and mostly
 /// below 8e-7.
 pub const K_STENCIL_EDGE: usize = 7;
-
-/// What the tables say of one ratio.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Side {
-    /// The ratio, below the search limit.
-    Below(f64),
-    /// Above the search limit: nothing (bouncing or double collision) below v_max.
-    Above,
-    /// Not vouched for, or too close to the limit.
-    Unknown,
-}
-
-/// `g = ln(ratio - 1)` vouched for, or a lower bound of it with the margin its verdict needs
-/// ([`V_MAX_MARGIN`], or [`BOUND_MARGIN`] for the bounds checked against the exact nodes only).
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum Eval {
-    Value(f64),
-    AtLeast { g: f64, margin: f64 },
-    Unknown,
-}
-
-impl Eval {
-    /// Of two lower bounds, the one that says the most (the larger ratio over its margin).
-    fn stronger(self, other: Eval) -> Eval {
-        let reach = |e: Eval| match e {
-            Eval::AtLeast { g, margin } => (1.0 + g.exp()) / (1.0 + margin),
-            _ => f64::NEG_INFINITY,
-        };
-        if reach(other) > reach(self) {
-            other
-        } else {
-            self
-        }
-    }
-}
-
-fn side(e: Eval, f_max: f64) -> Side {
-    match e {
-        Eval::Value(g) => {
-            let r = 1.0 + g.exp();
-            if r < f_max * (1.0 - V_MAX_MARGIN) {
-                Side::Below(r)
-            } else if r > f_max * (1.0 + V_MAX_MARGIN) {
-                Side::Above
-            } else {
-                Side::Unknown
-            }
-        }
-        Eval::AtLeast { g, margin } if 1.0 + g.exp() > f_max * (1.0 + margin) => Side::Above,
-        _ => Side::Unknown,
-    }
-}
 
 /// A plain pair kept: `((y, x), [g F, g F_on])`.
 type PlainPair = ((f64, f64), Option<[f64; 2]>);
@@ -266,7 +203,8 @@ impl MasterTables {
     /// `curve` at (x, y, k) from the stencil ([`super::table`]): plain where every table (and
     /// the k check) vouches for it at x, else sheared at the distance to the end where they do
     /// (this needs the end at (y, k)); closer to the end than vouched, at least the value at the
-    /// closest vouched point, where the rows' ratios increase towards the end.
+    /// closest vouched point, where the rows' ratios increase towards the end, or, down to the
+    /// tables' lower-bound limits (`d_lb`), at least the value there, with [`BOUND_MARGIN`].
     fn eval(&self, ks: &KStencil, curve: Curve, x: f64, y: f64, end: Option<f64>) -> Eval {
         let Some(check) = self.check_of(ks, y) else {
             return Eval::Unknown;
@@ -450,17 +388,6 @@ fn plain_limit(ks: &KStencil, check: Option<[f64; CELL_LIMITS]>, curve: Curve) -
         hi = hi.min(t.plain_limit_in(at, curve)?);
     }
     Some(hi)
-}
-
-/// The answer from what the tables say of each ratio: both below the search limit, F above it
-/// (no bouncing below v_max) with F_on below or above; nothing otherwise.
-fn both(stick: Side, onset: Side) -> Option<(Option<f64>, Option<f64>)> {
-    match (stick, onset) {
-        (Side::Below(s), Side::Below(o)) => Some((Some(s), Some(o.min(s)))),
-        (Side::Above, Side::Below(o)) => Some((None, Some(o))),
-        (Side::Above, Side::Above) => Some((None, None)),
-        _ => None,
-    }
 }
 
 /// The relative accuracy the tables promise against the exact search (V_stick and

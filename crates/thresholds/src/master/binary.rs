@@ -6,7 +6,7 @@
 //! [`crate::bytes`]) from the committed text, read by the library on first use; `std` and
 //! `bytemuck` only.
 
-use super::format::{CellData, EndsData, PieceData, TableData, CELL_LIMITS};
+use super::format::{CellData, EndsData, PieceData, TableData, CELL_LIMITS, VOUCHED_LIMITS};
 use crate::bytes::{self, Reader, Writer};
 use std::borrow::Cow;
 
@@ -199,12 +199,8 @@ pub fn to_bytes(tables: &[TableData], ends: &EndsData) -> Vec<u8> {
     e.f(ends.kcheck_y.0);
     e.f(ends.kcheck_y.1);
     e.n(ends.kcheck_y.2);
-    // the k checks have no lower-bound limits: five numbers each
-    let flat: Vec<f64> = ends
-        .kcheck
-        .iter()
-        .flat_map(|c| c.numbers().into_iter().take(5))
-        .collect();
+    // the k checks have no lower-bound limits
+    let flat: Vec<f64> = ends.kcheck.iter().flat_map(CellData::vouched).collect();
     e.fs(&flat);
     bytes::to_bytes(MAGIC, &e.0, &encoded)
 }
@@ -247,7 +243,7 @@ pub fn ends_from_bytes(bytes: &'static [u8]) -> Option<EndsData> {
     e.kcheck_y = (r.f()?, r.f()?, r.n()?);
     e.kcheck = r
         .fs()?
-        .chunks_exact(5)
+        .chunks_exact(VOUCHED_LIMITS)
         .map(CellData::from_numbers)
         .collect();
     Some(e)

@@ -120,7 +120,7 @@ pub fn ends_to_text(e: &EndsData) -> String {
     let (y0, dy, ny) = e.kcheck_y;
     let _ = writeln!(out, "kgrid,{},{},{}", number(y0), number(dy), ny);
     for c in &e.kcheck {
-        let v: Vec<String> = c.numbers().iter().map(|&x| number(x)).collect();
+        let v: Vec<String> = c.vouched().iter().map(|&x| number(x)).collect();
         let _ = writeln!(out, "kcheck,{}", v.join(","));
     }
     out
@@ -182,5 +182,14 @@ mod tests {
         let again = table_to_text(&t);
         assert_eq!(table_to_text(&parse_table(&again).unwrap()), again);
         assert!(again.contains("\nbody,0.0001,0.0002\n"), "{again}");
+        // a lower-bound limit above its vouched one, or not a distance, is refused
+        for bad in [
+            "body,1e-4,2e-4,1e-5,3e-4",
+            "body,1e-4,2e-4,nan,1e-5",
+            "strip,3e-4,0",
+        ] {
+            let text = format!("k,0.01\nrow,0,0.4,0.41,1\n{bad}\n");
+            assert!(parse_table(&text).is_err(), "{bad}");
+        }
     }
 }

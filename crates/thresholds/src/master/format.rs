@@ -21,7 +21,7 @@
 //! bounds`; absent: `d_lo`) reach closer to the end for lower bounds only: there the
 //! interpolation was checked against the exact nodes but the default search strays from them
 //! by more than the tables promise, so the tables answer only "above the search limit" from it
-//! ([`super::answer`], `BOUND_MARGIN`).
+//! (`MasterTables::ratios`, `BOUND_MARGIN`).
 //!
 //! The end curves x_s(y, k) and x_on(y, k) on a uniform grid in y and ln k:
 //! ```text
@@ -149,25 +149,32 @@ impl CellData {
         d_lb: None,
     };
 
-    /// As five numbers, `x_hi` then `d_lo`, and `d_lb` after them where it is given.
-    pub fn numbers(&self) -> Vec<f64> {
-        let mut v = vec![
+    /// The vouched limits as [`VOUCHED_LIMITS`] numbers: `x_hi` then `d_lo` (a k check's
+    /// record).
+    pub fn vouched(&self) -> [f64; VOUCHED_LIMITS] {
+        [
             self.x_hi[0],
             self.x_hi[1],
             self.d_lo[0],
             self.d_lo[1],
             self.d_lo[2],
-        ];
+        ]
+    }
+
+    /// As numbers: [`CellData::vouched`], then `d_lb` where it is given (a table's `cell`
+    /// record).
+    pub fn numbers(&self) -> Vec<f64> {
+        let mut v = self.vouched().to_vec();
         v.extend(self.d_lb.into_iter().flatten());
         v
     }
 
-    /// From five or eight numbers ([`CellData::numbers`]).
+    /// From [`VOUCHED_LIMITS`] or [`CELL_LIMITS`] numbers ([`CellData::numbers`]).
     pub fn from_numbers(v: &[f64]) -> CellData {
         CellData {
             x_hi: [v[0], v[1]],
             d_lo: [v[2], v[3], v[4]],
-            d_lb: (v.len() == 8).then(|| [v[5], v[6], v[7]]),
+            d_lb: (v.len() == CELL_LIMITS).then(|| [v[5], v[6], v[7]]),
         }
     }
 
@@ -193,8 +200,12 @@ impl CellData {
     }
 }
 
-/// How many numbers a cell's limits are in the interpolation form ([`CellData::limits`]).
-pub const CELL_LIMITS: usize = 8;
+/// How many numbers a cell's vouched limits are ([`CellData::vouched`]): all a k check has.
+pub const VOUCHED_LIMITS: usize = 5;
+
+/// How many numbers a cell's limits are in the interpolation form ([`CellData::limits`]): the
+/// vouched ones and the three lower-bound limits.
+pub const CELL_LIMITS: usize = VOUCHED_LIMITS + 3;
 
 /// The table of one k.
 #[derive(Debug, Clone, PartialEq)]
@@ -300,6 +311,20 @@ fn numbers(line: usize, fields: &[&str], n: usize) -> Result<Vec<f64>, FormatErr
         .collect()
 }
 
+/// Lower-bound limits `lb` (none, or one for each of the vouched limits `lo`), each a
+/// distance above 0 and at most its vouched one: a NaN or a larger one would loosen the
+/// tables' answers unnoticed.
+fn bounds_within(line: usize, lo: &[f64], lb: &[f64]) -> Result<(), FormatError> {
+    if lb.iter().zip(lo).all(|(&b, &l)| b > 0.0 && b <= l) {
+        Ok(())
+    } else {
+        Err(bad(
+            line,
+            "a lower-bound limit (d_lb) must be above 0 and at most its d_lo",
+        ))
+    }
+}
+
 /// Reads a table from its text.
 pub fn parse_table(text: &str) -> Result<TableData, FormatError> {
     let mut t = TableData {
@@ -352,6 +377,7 @@ pub fn parse_table(text: &str) -> Result<TableData, FormatError> {
             "body" => {
                 let j = row(&mut t)?;
                 let v = numbers(n, &rest, if rest.len() == 4 { 4 } else { 2 })?;
+                bounds_within(n, &v[..2], &v[2..])?;
                 t.rows[j].body.d_lo = [v[0], v[1]];
                 t.rows[j].body.d_lb = (v.len() == 4).then(|| [v[2], v[3]]);
                 in_strip = false;
@@ -359,6 +385,7 @@ pub fn parse_table(text: &str) -> Result<TableData, FormatError> {
             "strip" => {
                 let j = row(&mut t)?;
                 let v = numbers(n, &rest, if rest.len() == 2 { 2 } else { 1 })?;
+                bounds_within(n, &v[..1], &v[1..])?;
                 t.rows[j].strip.d_lo = [f64::INFINITY, v[0]];
                 t.rows[j].strip.d_lb = v.get(1).map(|&d| [f64::INFINITY, d]);
                 in_strip = true;
@@ -392,7 +419,17 @@ pub fn parse_table(text: &str) -> Result<TableData, FormatError> {
                 p.f_onset.push(o);
             }
             "cell" => {
-                let v = numbers(n, &rest, if rest.len() == 8 { 8 } else { 5 })?;
+                let with_bounds = rest.len() == CELL_LIMITS;
+                let v = numbers(
+                    n,
+                    &rest,
+                    if with_bounds {
+                        CELL_LIMITS
+                    } else {
+                        VOUCHED_LIMITS
+                    },
+                )?;
+                bounds_within(n, &v[2..VOUCHED_LIMITS], &v[VOUCHED_LIMITS..])?;
                 t.cells.push(CellData::from_numbers(&v));
             }
             other => return Err(bad(n, format!("unknown record '{other}'"))),
@@ -451,7 +488,7 @@ pub fn parse_ends(text: &str) -> Result<EndsData, FormatError> {
                 e.kcheck_y = (v[0], v[1], v[2] as usize);
             }
             "kcheck" => {
-                let v = numbers(n, &fields[1..], 5)?;
+                let v = numbers(n, &fields[1..], VOUCHED_LIMITS)?;
                 e.kcheck.push(CellData::from_numbers(&v));
             }
             _ => {

@@ -65,17 +65,19 @@ mod file;
 pub mod format;
 pub(crate) mod interp;
 mod table;
+mod verdict;
 
 use binary::Table;
 use format::EndsData;
 use std::sync::OnceLock;
 
 pub(crate) use answer::from_table;
-pub use answer::{BOUND_MARGIN, K_STENCIL, K_STENCIL_EDGE, TABLE_REL_TOL, V_MAX_MARGIN};
+pub use answer::{K_STENCIL, K_STENCIL_EDGE, TABLE_REL_TOL};
 pub use ends::{EndCurves, Ends};
 pub use file::{ends_to_text, table_to_text};
 pub use format::{FormatError, F_TOP};
 pub use table::Curve;
+pub use verdict::{BOUND_MARGIN, V_MAX_MARGIN};
 
 /// Bytes aligned for `f64`: the embedded binary form's arrays are borrowed in place
 /// ([`binary::Floats`]) instead of copied on first use (1.2 ms for the end curves and a table,

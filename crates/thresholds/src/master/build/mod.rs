@@ -70,9 +70,10 @@ pub struct BuildConfig {
     /// still catches a default search that found another root.
     pub agree_beyond: f64,
     /// Where the tables serve as lower bounds only (`--part bounds`, [`revouch::Pass::Bounds`]),
-    /// the default search must lie within this of a node: 1e-3, seven times the 1.4e-4 it
-    /// strays by near the cliff of CO2-like rows, a tenth of the margin an answer from a lower
-    /// bound keeps from the search limit (`master::answer::BOUND_MARGIN`, 1e-2), so that the
+    /// the default search must lie within this (relative) of a node, and beyond the limit find
+    /// at least the ratio at it less this: 1e-3, seven times the 1.4e-4 it strays by near the
+    /// cliff of CO2-like rows, a tenth of the margin an answer from a lower bound keeps from
+    /// the search limit ([`crate::master::BOUND_MARGIN`], 1e-2), so that the
     /// verdict "above the search limit" is the default search's. It still catches a default
     /// search that found another root.
     pub bound_agree: f64,

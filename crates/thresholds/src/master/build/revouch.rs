@@ -22,13 +22,15 @@
 //! `d_lb`: where the tables are within their tolerance of the exact nodes, but the default
 //! search strays from them by more than the tables promise against it, so that they serve only
 //! as lower bounds, for the verdict "above the search limit" (`master::answer`,
-//! `BOUND_MARGIN`). Measured on the CO2-like rows near the cliff (k = 0.01, y about -0.5 to
+//! `BOUND_MARGIN`); a cell only where its checks reached below its old limit, and a piece only
+//! where the default search at every node beyond the new limit finds at least the ratio there
+//! (what an answer claims of that stretch). Measured on the CO2-like rows near the cliff (k = 0.01, y about -0.5 to
 //! 0.7): the default search strays by 1.2e-5 to 1.4e-4 there, the rows' midpoints stay within
 //! 1e-6 of new nodes down to 1e-5 from the ends.
 
 use super::cells::{last_passing, sheared_checks, Checker};
 use super::row::interpolate;
-use super::{agrees, default_search, rel_diff, BuildConfig, Cache};
+use super::{agrees, default_search, rel_diff, BuildConfig, Cache, Point};
 use crate::master::ends::EndCurves;
 use crate::master::format::{CellData, EndsData, PieceData, RowData, TableData};
 use crate::master::interp::stencil_start;
@@ -63,18 +65,15 @@ impl Pass {
 }
 
 /// `piece` (ending at `end`) with ratio `v` vouched on past its `d_lo[v]`, node after node,
-/// while the midpoint check and the default search pass (`pass`'s rule); the new limit.
-#[allow(clippy::too_many_arguments)]
-fn extend_piece(
-    cfg: &BuildConfig,
-    law: &CrackLaw,
-    cache: &Cache,
-    pass: Pass,
-    y: f64,
-    end: f64,
-    piece: &PieceData,
-    v: usize,
-) -> f64 {
+/// while the midpoint check and the default search pass (`pass`'s rule); the new limit. A
+/// lower bound serves all the way to the end (the value at the limit, where the rows increase
+/// towards it): [`Pass::Bounds`] keeps its limit only where the default search at every node
+/// beyond it finds the ratio at least the limit's, to [`BuildConfig::bound_agree`] (or
+/// nothing below its search limit), and keeps `d_lo` otherwise.
+fn extend_piece(on: &Checker, pass: Pass, y: f64, end: f64, piece: &PieceData, v: usize) -> f64 {
+    let Checker {
+        cfg, law, cache, ..
+    } = *on;
     let d_lo = piece.d_lo[v];
     let n = piece.x.len();
     if !d_lo.is_finite() || n < 2 {
@@ -90,12 +89,12 @@ fn extend_piece(
     else {
         return d_lo;
     };
-    let mut vouched = d_lo;
+    let ratio = |p: Point| if v == 0 { p.stick() } else { p.onset() };
+    let (mut vouched, mut last) = (d_lo, first);
     for i in first + 1..n {
         let (a, b) = (nodes[i - 1].0, nodes[i].0);
         let u_mid = 0.5 * ((end - a).ln() + (end - b).ln());
         let exact = cache.node(cfg, law, end - u_mid.exp(), y);
-        let ratio = |p: super::Point| if v == 0 { p.stick() } else { p.onset() };
         let midpoint_ok =
             rel_diff(Some(interpolate(&nodes, end, v, u_mid)), ratio(exact)) <= cfg.tol;
         let agrees = nodes[i].1[v] < cfg.agree_from
@@ -103,23 +102,31 @@ fn extend_piece(
         if !(midpoint_ok && agrees) {
             break;
         }
-        vouched = end - b;
+        (vouched, last) = (end - b, i);
+    }
+    if pass == Pass::Bounds && last > first {
+        // beyond the limit the answer claims "at least the ratio at the limit": the default
+        // search must not find less there (a search that failed proves nothing)
+        let floor = nodes[last].1[v] * (1.0 - cfg.bound_agree);
+        let holds =
+            nodes[last + 1..]
+                .iter()
+                .all(|node| match default_search(cfg, law, node.0, y) {
+                    Point::Failed => false,
+                    p => ratio(p).is_none_or(|r| r >= floor),
+                });
+        if !holds {
+            return d_lo;
+        }
     }
     vouched
 }
 
 /// The row with its pieces vouched (`pass`: as values or as lower bounds) as close to their
 /// ends as the checks allow.
-fn revouch_row(
-    cfg: &BuildConfig,
-    law: &CrackLaw,
-    cache: &Cache,
-    pass: Pass,
-    row: &RowData,
-) -> RowData {
+fn revouch_row(on: &Checker, pass: Pass, row: &RowData) -> RowData {
     let mut r = row.clone();
-    let extend =
-        |end: f64, p: &PieceData, v: usize| extend_piece(cfg, law, cache, pass, row.y, end, p, v);
+    let extend = |end: f64, p: &PieceData, v: usize| extend_piece(on, pass, row.y, end, p, v);
     let body = [0, 1].map(|v| extend(row.x_s, &row.body, v));
     let strip = [f64::INFINITY, extend(row.x_on, &row.strip, 1)];
     match pass {
@@ -165,11 +172,17 @@ pub fn revouch_table(
     let law = CrackLaw::new(table.k)?;
     let curves = EndCurves::new(ends.clone());
     let cache = Cache::default();
+    let on = Checker {
+        cfg,
+        law: &law,
+        cache: &cache,
+        curves: &curves,
+    };
     let rows: Vec<RowData> = table
         .rows
         .par_iter()
         .map(|row| {
-            let r = revouch_row(cfg, &law, &cache, pass, row);
+            let r = revouch_row(&on, pass, row);
             let to = |p: &PieceData, v: usize| match pass {
                 Pass::Revouch => number(p.d_lo[v]),
                 Pass::Bounds => number(p.bound_limit(v)),
@@ -189,12 +202,6 @@ pub fn revouch_table(
         })
         .collect();
     let n = rows.len();
-    let on = Checker {
-        cfg,
-        law: &law,
-        cache: &cache,
-        curves: &curves,
-    };
     let cells: Vec<CellData> = (0..table.cells.len())
         .into_par_iter()
         .map(|j| {
@@ -212,9 +219,21 @@ pub fn revouch_table(
                 if old.is_finite() && passed_to_old && new < old {
                     // the points between the new limit and the old (those at the old passed)
                     let range = (new.ln(), old.ln() - SAME_LIMIT);
-                    *moved = sheared_checks(&on, &rows, j, c, range).map_or(old, |checks| {
-                        last_passing(&checks, new.ln(), old.ln()).exp()
-                    });
+                    // where nothing moves, the cell's own limit, to the bit (equal to its rows'
+                    // old one to SAME_LIMIT only: not a new limit)
+                    let kept = cell.d_lo[c];
+                    *moved = match sheared_checks(&on, &rows, j, c, range) {
+                        // a lower bound needs a check below the old limit (values keep the
+                        // rule they were vouched by: the rows' limit where none lies between)
+                        Some(checks) if bounds && checks.is_empty() => kept,
+                        Some(checks) => match last_passing(&checks, new.ln(), old.ln()) {
+                            // no check passed below the old limit (or only next to it; the
+                            // exp of a log may lie an ulp above it)
+                            u if u.exp() >= old * (1.0 - SAME_LIMIT) => kept,
+                            u => u.exp(),
+                        },
+                        None => kept,
+                    };
                 }
             }
             match pass {
