@@ -253,8 +253,8 @@ pub fn run_build(
                 continue;
             }
             let mut t = match part {
-                Part::Revouch => revouch_table(&cfg, &t, &ends, Pass::Revouch, &progress)?,
-                Part::Bounds => revouch_table(&cfg, &t, &ends, Pass::Bounds, &progress)?,
+                Part::Revouch => revouch_table(Pass::Revouch, &cfg, &t, &ends, &progress)?,
+                Part::Bounds => revouch_table(Pass::Bounds, &cfg, &t, &ends, &progress)?,
                 _ => check_beyond_table(&cfg, &t, &progress)?,
             };
             stamp(&mut t.header);

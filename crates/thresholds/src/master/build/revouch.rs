@@ -160,13 +160,13 @@ fn rows_limit(rows: &[RowData], s: usize, c: usize, bounds: bool) -> f64 {
         .fold(f64::NEG_INFINITY, f64::max)
 }
 
-/// `table` (of k, on the end curves `ends`) vouched closer to its ends, as values or as lower
-/// bounds (`pass`; see the module documentation); `progress` is told what is done.
+/// The `pass` over `table` (of k, on the end curves `ends`): vouched closer to its ends as
+/// values or as lower bounds (see the module documentation); `progress` is told what is done.
 pub fn revouch_table(
+    pass: Pass,
     cfg: &BuildConfig,
     table: &TableData,
     ends: &EndsData,
-    pass: Pass,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<TableData, ThresholdsError> {
     let law = CrackLaw::new(table.k)?;
