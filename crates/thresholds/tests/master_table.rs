@@ -9,7 +9,7 @@
 use contact::{Contact, Geometry, Material};
 use greenwood::CrackLaw;
 use thresholds::master::binary::Table;
-use thresholds::master::MasterTables;
+use thresholds::master::{ends_to_text, table_to_text, MasterTables};
 use thresholds::paper::MUSIOLIK_2016A;
 use thresholds::{
     fit_t_vis, sticking_thresholds, SearchOptions, StickingThresholds, ThresholdMethod,
@@ -423,6 +423,20 @@ fn the_jkr_corner_the_search_refuses() {
         (f_table / f_search - 1.0).abs() < 1e-5,
         "{f_table} vs {f_search}"
     );
+}
+
+/// The text form reads and writes back every committed file to the byte (a table's optional
+/// lower-bound limits where given, nothing where not): what `cargo xtask master-table` writes
+/// is what the library reads.
+#[test]
+fn the_committed_text_round_trips() {
+    for (p, t) in common::committed_tables() {
+        let text = std::fs::read_to_string(&p).unwrap();
+        assert!(table_to_text(&t) == text, "{}", p.display());
+    }
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data/master_ends.csv");
+    let text = std::fs::read_to_string(path).unwrap();
+    assert!(ends_to_text(&common::committed_ends()) == text);
 }
 
 /// The embedded binary form is the committed text: every table and the end curves read from
