@@ -24,9 +24,9 @@
 //! as lower bounds, for the verdict "above the search limit" (`master::answer`,
 //! `BOUND_MARGIN`); a cell only where its checks reached below its old limit, and a piece only
 //! where the default search at every node beyond the new limit finds at least the ratio there
-//! (what an answer claims of that stretch). Measured on the CO2-like rows near the cliff (k = 0.01, y about -0.5 to
-//! 0.7): the default search strays by 1.2e-5 to 1.4e-4 there, the rows' midpoints stay within
-//! 1e-6 of new nodes down to 1e-5 from the ends.
+//! (what an answer claims of that stretch). Measured on the CO2-like rows near the cliff
+//! (k = 0.01, y about -0.5 to 0.7): the default search strays by 1.2e-5 to 1.4e-4 there, the
+//! rows' midpoints stay within 1e-6 of new nodes down to 1e-5 from the ends.
 
 use super::cells::{last_passing, sheared_checks, Checker};
 use super::row::interpolate;
