@@ -1,8 +1,8 @@
 //! Turns the committed master tables (`data/master_k<k>.csv`, `data/master_ends.csv`, text) into
 //! their binary form (`$OUT_DIR/master.bin`), which the library embeds: at run time its arrays
 //! are borrowed in place (about 0.3 ms for the end curves and one table), not parsed. The
-//! reader and writer are the library's own (`src/master/format.rs`, `src/master/binary.rs`,
-//! `src/bytes.rs`).
+//! reader and writer are the library's own (`src/master/format.rs`, `src/master/parse.rs`,
+//! `src/master/binary.rs`, `src/bytes.rs`, `src/text.rs`).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
@@ -10,9 +10,16 @@
 #[path = "src/bytes.rs"]
 mod bytes;
 
-#[allow(dead_code)]
+#[path = "src/text.rs"]
+mod text;
+
+// the library's paths to the reader (`format::parse_table`, ...) are not used here
+#[allow(dead_code, unused_imports)]
 #[path = "src/master/format.rs"]
 mod format;
+#[allow(dead_code)]
+#[path = "src/master/parse.rs"]
+mod parse;
 
 #[allow(dead_code)]
 #[path = "src/master/binary.rs"]
@@ -27,7 +34,9 @@ use std::path::{Path, PathBuf};
 fn main() {
     let data = Path::new("data");
     println!("cargo:rerun-if-changed=src/bytes.rs");
+    println!("cargo:rerun-if-changed=src/text.rs");
     println!("cargo:rerun-if-changed=src/master/format.rs");
+    println!("cargo:rerun-if-changed=src/master/parse.rs");
     println!("cargo:rerun-if-changed=src/master/binary.rs");
     println!("cargo:rerun-if-changed=src/restitution/format.rs");
     println!("cargo:rerun-if-changed=build.rs");

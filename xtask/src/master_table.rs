@@ -50,7 +50,8 @@ pub enum Part {
     /// The committed tables vouched closer to their ends (no new nodes; then `kcheck`).
     Revouch,
     /// The committed tables' lower-bound limits closer to their ends, checked against the exact
-    /// nodes where the default search strays from them (no new nodes; after `revouch`).
+    /// nodes where the default search strays from them (no new nodes; after `revouch`, then
+    /// `kcheck`, whose checks between tables go on into them).
     Bounds,
     /// The committed tables' rows that are not monotone checked for no bouncing beyond their
     /// ends up to where their ratios stop increasing (no new nodes).

@@ -55,6 +55,7 @@ pub mod restitution;
 pub mod search;
 pub mod stick;
 pub mod sweep;
+mod text;
 
 pub use contact::{Contact, ContactError, Geometry, Material, Warning, JKR_QUANTITIES};
 pub use dynamics::{

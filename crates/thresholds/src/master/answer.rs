@@ -21,7 +21,7 @@
 //!    decides).
 
 use super::binary::Table;
-use super::format::CELL_LIMITS;
+use super::format::{CELL_LIMITS, LOWER_BOUND_OFFSET};
 use super::interp::lagrange_weight;
 use super::table::{Curve, Levels, RowsAt};
 use super::verdict::{both, side, Eval, Side, BOUND_MARGIN, V_MAX_MARGIN};
@@ -236,8 +236,8 @@ impl MasterTables {
                 Curve::OnsetStrip => 4,
             };
             let (mut lo, mut hi) = (check.map_or(f64::NEG_INFINITY, |k| k[c]), f64::INFINITY);
-            // the k checks hold no deeper limit for lower bounds: theirs is their `lo`
-            let mut lb = check.map_or(f64::NEG_INFINITY, |k| k[c]);
+            // the k check's limit for lower bounds (its `lo` where it has none deeper)
+            let mut lb = check.map_or(f64::NEG_INFINITY, |k| k[c + LOWER_BOUND_OFFSET]);
             let mut vouched = true;
             for (t, at) in ks.tables_at() {
                 match t.vouched_in(at, curve) {
@@ -288,6 +288,17 @@ impl MasterTables {
         ks.combine(|t, at| {
             let (lo, hi) = t.vouched_in(at, curve)?;
             (u >= lo && u <= hi).then_some(())?;
+            t.g_at_in(at, curve, y, u)
+        })
+    }
+
+    /// [`MasterTables::g_between_tables`] where each table serves as a lower bound (down to its
+    /// `d_lb`, closer to the end than it vouches for values), without the checks between tables.
+    pub fn g_bound_between_tables(&self, curve: Curve, y: f64, u: f64, k: f64) -> Option<f64> {
+        let ks = self.k_stencil(k, y)?;
+        ks.combine(|t, at| {
+            let (_, hi) = t.vouched_in(at, curve)?;
+            (u >= t.bound_in(at, curve) && u <= hi).then_some(())?;
             t.g_at_in(at, curve, y, u)
         })
     }

@@ -153,7 +153,7 @@ impl Table {
 }
 
 /// The binary form's first bytes.
-const MAGIC: &[u8; 8] = b"STKMT006";
+const MAGIC: &[u8; 8] = b"STKMT007";
 
 impl Piece {
     fn write(&self, w: &mut Writer) {
@@ -199,8 +199,16 @@ pub fn to_bytes(tables: &[TableData], ends: &EndsData) -> Vec<u8> {
     e.f(ends.kcheck_y.0);
     e.f(ends.kcheck_y.1);
     e.n(ends.kcheck_y.2);
-    // the k checks have no lower-bound limits
-    let flat: Vec<f64> = ends.kcheck.iter().flat_map(CellData::vouched).collect();
+    // each k check's limits with its lower-bound ones (those of the vouched limits where it has
+    // none)
+    let flat: Vec<f64> = ends
+        .kcheck
+        .iter()
+        .flat_map(|c| {
+            let lb = [0, 1, 2].map(|i| c.bound_limit(i));
+            c.vouched().into_iter().chain(lb)
+        })
+        .collect();
     e.fs(&flat);
     bytes::to_bytes(MAGIC, &e.0, &encoded)
 }
@@ -243,8 +251,12 @@ pub fn ends_from_bytes(bytes: &'static [u8]) -> Option<EndsData> {
     e.kcheck_y = (r.f()?, r.f()?, r.n()?);
     e.kcheck = r
         .fs()?
-        .chunks_exact(VOUCHED_LIMITS)
-        .map(CellData::from_numbers)
+        .chunks_exact(CELL_LIMITS)
+        .map(|v| {
+            // none given (every one the vouched limit's) reads as none, as in the text
+            let given = v[VOUCHED_LIMITS..] != v[2..VOUCHED_LIMITS];
+            CellData::from_numbers(if given { v } else { &v[..VOUCHED_LIMITS] })
+        })
         .collect();
     Some(e)
 }

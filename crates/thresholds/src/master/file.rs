@@ -120,7 +120,7 @@ pub fn ends_to_text(e: &EndsData) -> String {
     let (y0, dy, ny) = e.kcheck_y;
     let _ = writeln!(out, "kgrid,{},{},{}", number(y0), number(dy), ny);
     for c in &e.kcheck {
-        let v: Vec<String> = c.vouched().iter().map(|&x| number(x)).collect();
+        let v: Vec<String> = c.numbers().iter().map(|&x| number(x)).collect();
         let _ = writeln!(out, "kcheck,{}", v.join(","));
     }
     out

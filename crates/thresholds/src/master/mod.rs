@@ -64,6 +64,7 @@ pub mod ends;
 mod file;
 pub mod format;
 pub(crate) mod interp;
+mod parse;
 mod table;
 mod verdict;
 

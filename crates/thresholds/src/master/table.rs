@@ -15,14 +15,10 @@
 //! plain up to an x, sheared down to a distance to the end.
 
 use super::binary::{self, Piece, Table};
-use super::format::F_TOP;
+use super::format::{F_TOP, LOWER_BOUND_OFFSET};
 use super::interp::{
     interval, intervals4, lagrange, local_cubic, local_cubic_both, stencil_start, weights4,
 };
-
-/// Where a cell's lower-bound limits stand after its vouched ones
-/// ([`super::format::CellData::limits`]).
-const LOWER_BOUND_OFFSET: usize = 3;
 
 /// Which piece of the rows, and which ratio.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

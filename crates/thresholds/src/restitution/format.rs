@@ -236,12 +236,9 @@ pub fn parse(text: &str) -> Result<TableData, FormatError> {
         nu: Vec::new(),
         rows: Vec::new(),
     };
-    for (i, line) in text.lines().enumerate() {
-        let n = i + 1;
-        if let Some(h) = line.strip_prefix('#') {
-            t.header.push(h.trim_start().to_string());
-            continue;
-        }
+    let (header, records) = crate::text::split(text);
+    t.header = header;
+    for (n, line) in records {
         let fields: Vec<&str> = line.split(',').collect();
         let bad = |p: &str| FormatError {
             line: n,

@@ -2,10 +2,12 @@
 //! the end curves' grid), in each bin of y, the quintic in ln k through the six tables around it
 //! (the sextic through seven in the first and the last interval) is compared with the exact
 //! search along the nodes of the nearest row, from far from the end towards it; the interval is
-//! vouched for in that bin down to the last distance that passed.
+//! vouched for in that bin down to the last distance that passed. Closer to the end, where the
+//! tables serve as lower bounds only (their `d_lb`), the same check goes on and gives the
+//! interval's lower-bound limit (`bound_limit`).
 
 use super::cells::SHEARED_REACH;
-use super::{rel_diff, BuildConfig, Cache};
+use super::{default_search, rel_diff, BuildConfig, Cache, Point};
 use crate::master::binary::Table;
 use crate::master::ends::EndCurves;
 use crate::master::format::{CellData, EndsData, TableData};
@@ -98,6 +100,7 @@ fn check_bin(
         }
     };
     let mut cell = CellData::NONE;
+    let mut lb = cell.d_lo;
     // plain x, from far from the end towards it
     for (v, curve) in [(0, Curve::Stick), (1, Curve::OnsetBody)] {
         let mut last_ok = f64::NEG_INFINITY;
@@ -125,14 +128,15 @@ fn check_bin(
             Curve::OnsetStrip => (&row.strip, row.x_on, e.x_on),
             _ => (&row.body, row.x_s, e.x_s),
         };
-        let us = piece
+        let us: Vec<f64> = piece
             .x
             .iter()
             .step_by(CHECK_EVERY)
             .map(|x| (end_row - x).ln())
-            .filter(|&u| u <= SHEARED_REACH.ln());
+            .filter(|&u| u <= SHEARED_REACH.ln())
+            .collect();
         let mut last_ok = f64::INFINITY;
-        for u in us {
+        for &u in &us {
             let Some(g) = all.g_between_tables(curve, y, u, law.k()) else {
                 continue;
             };
@@ -142,6 +146,82 @@ fn check_bin(
             last_ok = u.exp();
         }
         cell.d_lo[c] = last_ok;
+        let band = Band {
+            curve,
+            v,
+            y,
+            end,
+            lo: last_ok,
+        };
+        lb[c] = bound_limit(cfg, law, cache, all, &band, &us);
     }
+    cell.d_lb = (lb != cell.d_lo).then_some(lb);
     cell
+}
+
+/// One sheared limit of a k check, as [`bound_limit`] continues it: the curve and its ratio
+/// (0: F, 1: F_on), the y and the end at the interval's middle k, and the vouched limit (a
+/// distance to the end).
+struct Band {
+    curve: Curve,
+    v: usize,
+    y: f64,
+    end: f64,
+    lo: f64,
+}
+
+/// How close to the end the polynomial in ln k through the tables' lower bounds
+/// ([`MasterTables::g_bound_between_tables`]) holds at the check points `us` (u = ln of the
+/// distance, decreasing) beyond the vouched limit: to the build's tolerance against the exact
+/// search, from the limit on until one fails; kept only where the default search at every check
+/// point beyond finds at least the ratio there, less [`BuildConfig::bound_agree`] (what an
+/// answer claims of that stretch, as `--part bounds` asks of a table's rows). The vouched limit
+/// where not.
+fn bound_limit(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    cache: &Cache,
+    all: &MasterTables,
+    band: &Band,
+    us: &[f64],
+) -> f64 {
+    let Band {
+        curve,
+        v,
+        y,
+        end,
+        lo,
+    } = *band;
+    if !lo.is_finite() {
+        return lo;
+    }
+    let ratio = |p: Point| if v == 0 { p.stick() } else { p.onset() };
+    let beyond: Vec<f64> = us.iter().copied().filter(|&u| u < lo.ln()).collect();
+    // the last check point that passed: its index, distance and ratio
+    let mut last: Option<(usize, f64, f64)> = None;
+    for (i, &u) in beyond.iter().enumerate() {
+        let Some(g) = all.g_bound_between_tables(curve, y, u, law.k()) else {
+            continue;
+        };
+        let x = end - u.exp();
+        if rel_diff(Some(1.0 + g.exp()), ratio(cache.node(cfg, law, x, y))) > cfg.tol {
+            break;
+        }
+        last = Some((i, u.exp(), 1.0 + g.exp()));
+    }
+    let Some((i, lb, at_lb)) = last else {
+        return lo;
+    };
+    let floor = at_lb * (1.0 - cfg.bound_agree);
+    let holds = beyond[i + 1..]
+        .iter()
+        .all(|&u| match default_search(cfg, law, end - u.exp(), y) {
+            Point::Failed => false,
+            p => ratio(p).is_none_or(|r| r >= floor),
+        });
+    if holds {
+        lb
+    } else {
+        lo
+    }
 }
