@@ -126,13 +126,13 @@ fn every_tables_answers_from_lower_bounds_are_the_searchs() {
     assert!(n >= 50, "{n} answers from lower bounds");
 }
 
-/// Random k between the tables (log-uniform over their range): the lower bound of each table
-/// around k holds to its own limit, the polynomial in ln k to the k check's vouched limit (no
-/// deeper), and where the first reaches closer to the end than the second at a y of the k
-/// check's bin, the tables answer from lower bounds there too ([`check_the_band`]).
+/// Random k between the tables (log-uniform over their range): each table around k serves as a
+/// lower bound down to its own `d_lb`, the polynomial in ln k down to the k check's lower-bound
+/// limit (`cargo xtask master-table --part kcheck` goes on into the tables' bounds), and the
+/// tables' answers from them are the exact search's ([`check_the_band`]).
 #[test]
 fn between_tables_answers_from_lower_bounds_are_the_searchs() {
-    let n = check_the_band(10000, 37, (-6.0, 5.0), Rng::answered_k);
-    // measured: 10 of 10 000 (43 of 40 000, all alike, 2026-11-27): rare; a floor under it
-    assert!(n >= 4, "{n} answers from lower bounds");
+    let n = check_the_band(2000, 37, (-6.0, 5.0), Rng::answered_k);
+    // measured: 88 of 2000 (1536 of 40 000, all alike, 2026-11-27); a floor under it
+    assert!(n >= 50, "{n} answers from lower bounds");
 }
