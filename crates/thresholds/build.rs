@@ -13,7 +13,7 @@ mod bytes;
 #[path = "src/text.rs"]
 mod text;
 
-// the library's paths to the reader (`format::parse_table`, ...) are not used here
+// the library's re-export of the reader's error type (`format::FormatError`) is not used here
 #[allow(dead_code, unused_imports)]
 #[path = "src/master/format.rs"]
 mod format;

@@ -40,8 +40,8 @@ enum Command {
         /// checks between tables of neighbouring k, the committed tables vouched closer to
         /// their ends (`revouch`, no new nodes; then `kcheck`), their lower-bound limits
         /// closer still (`bounds`, no new nodes: where the default search strays from the
-        /// nodes, for the verdict "above the search limit"; then `kcheck`), or their rows that are not
-        /// monotone checked for no bouncing beyond their ends (`beyond`, no new nodes).
+        /// nodes, for the verdict "above the search limit"; then `kcheck`), or their rows that
+        /// are not monotone checked for no bouncing beyond their ends (`beyond`, no new nodes).
         #[arg(long, value_enum, default_value = "all")]
         part: xtask::master_table::Part,
         /// With `--part tables`, `revouch`, `bounds` or `beyond`: only the tables of these indices (k = 0.005 2^(i/3)).

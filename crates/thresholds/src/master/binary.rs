@@ -253,8 +253,9 @@ pub fn ends_from_bytes(bytes: &'static [u8]) -> Option<EndsData> {
         .fs()?
         .chunks_exact(CELL_LIMITS)
         .map(|v| {
-            // none given (every one the vouched limit's) reads as none, as in the text
-            let given = v[VOUCHED_LIMITS..] != v[2..VOUCHED_LIMITS];
+            // none given (every one the vouched limit's, to the bit) reads as none, as in the text
+            let bits = |w: &[f64]| w.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+            let given = bits(&v[VOUCHED_LIMITS..]) != bits(&v[2..VOUCHED_LIMITS]);
             CellData::from_numbers(if given { v } else { &v[..VOUCHED_LIMITS] })
         })
         .collect();

@@ -129,7 +129,7 @@ pub fn ends_to_text(e: &EndsData) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::master::format::{increasing_up_to, parse_table, F_TOP};
+    use crate::master::format::{increasing_up_to, parse_ends, parse_table, F_TOP};
 
     /// A ratio that falls from one node to the next by more than the nodes' noise ends the
     /// increase; the level is the least ratio from there on (the row is at least the smaller of
@@ -161,6 +161,22 @@ mod tests {
         let levels: Vec<f64> = t.rows.iter().map(|r| r.none_beyond).collect();
         assert_eq!(levels, [9989.5, F_TOP, 0.0]);
         assert_eq!(parse_table(&table_to_text(&t)).unwrap(), t);
+    }
+
+    /// A k check's lower-bound limits likewise: read where given, written back the same, and
+    /// refused above the vouched ones.
+    #[test]
+    fn k_check_lower_bounds_round_trip() {
+        let grid: String = (0..4)
+            .map(|j| format!("k,{}\n{}", 0.01 * 2f64.powi(j), "0,0,1\n".repeat(4)))
+            .collect();
+        let ends = |kcheck: &str| format!("grid,0,1,4,0.01,1,4\n{grid}kgrid,0,1,1\n{kcheck}");
+        let good = "kcheck,-1,-1,1e-4,1e-4,inf,1e-5,2e-5,inf\nkcheck,-1,-1,1e-4,1e-4,1e-4\n";
+        let e = parse_ends(&ends(good)).unwrap();
+        assert_eq!(e.kcheck[0].d_lb, Some([1e-5, 2e-5, f64::INFINITY]));
+        assert_eq!(e.kcheck[1].d_lb, None);
+        assert_eq!(parse_ends(&ends_to_text(&e)).unwrap(), e);
+        assert!(parse_ends(&ends("kcheck,-1,-1,1e-4,1e-4,1e-4,1e-3,1e-5,1e-5\n")).is_err());
     }
 
     /// The lower-bound limits (`d_lb`) are optional trailing numbers of the body, strip and cell

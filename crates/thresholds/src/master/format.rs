@@ -151,8 +151,7 @@ impl CellData {
         d_lb: None,
     };
 
-    /// The vouched limits as [`VOUCHED_LIMITS`] numbers: `x_hi` then `d_lo` (a k check's
-    /// record).
+    /// The vouched limits as [`VOUCHED_LIMITS`] numbers: `x_hi` then `d_lo`.
     pub fn vouched(&self) -> [f64; VOUCHED_LIMITS] {
         [
             self.x_hi[0],
@@ -163,7 +162,7 @@ impl CellData {
         ]
     }
 
-    /// As numbers: [`CellData::vouched`], then `d_lb` where it is given (a table's `cell`
+    /// As numbers: [`CellData::vouched`], then `d_lb` where it is given (a `cell` or `kcheck`
     /// record).
     pub fn numbers(&self) -> Vec<f64> {
         let mut v = self.vouched().to_vec();
@@ -202,7 +201,7 @@ impl CellData {
     }
 }
 
-/// How many numbers a cell's vouched limits are ([`CellData::vouched`]): all a k check has.
+/// How many numbers a cell's vouched limits are ([`CellData::vouched`]).
 pub const VOUCHED_LIMITS: usize = 5;
 
 /// How many numbers a cell's limits are in the interpolation form ([`CellData::limits`]): the

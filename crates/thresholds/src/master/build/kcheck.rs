@@ -67,9 +67,10 @@ pub fn k_checks(
     // this check's description replaces an earlier one's
     out.header.retain(|h| !h.starts_with("k checks:"));
     out.header.push(format!(
-        "k checks: the polynomial in ln k through {K_STENCIL} tables ({K_STENCIL_EDGE} in the first and last interval), in each interval of k at its middle k, in y bins of {}, along every {CHECK_EVERY}nd node of the nearest row, to {}",
+        "k checks: the polynomial in ln k through {K_STENCIL} tables ({K_STENCIL_EDGE} in the first and last interval), in each interval of k at its middle k, in y bins of {}, along every {CHECK_EVERY}nd node of the nearest row, to {}; then on through the tables' lower bounds with the default search within {} (d_lb)",
         number(dy),
-        number(cfg.tol)
+        number(cfg.tol),
+        number(cfg.bound_agree)
     ));
     Ok(out)
 }
@@ -173,7 +174,8 @@ struct Band {
 /// How close to the end the polynomial in ln k through the tables' lower bounds
 /// ([`MasterTables::g_bound_between_tables`]) holds at the check points `us` (u = ln of the
 /// distance, decreasing) beyond the vouched limit: to the build's tolerance against the exact
-/// search, from the limit on until one fails; kept only where the default search at every check
+/// search, with the default search within [`BuildConfig::bound_agree`] of it, from the limit on
+/// until one fails (as `--part bounds` vouches a row); kept only where the default search at every check
 /// point beyond finds at least the ratio there, less [`BuildConfig::bound_agree`] (what an
 /// answer claims of that stretch, as `--part bounds` asks of a table's rows). The vouched limit
 /// where not.
@@ -201,10 +203,20 @@ fn bound_limit(
     let mut last: Option<(usize, f64, f64)> = None;
     for (i, &u) in beyond.iter().enumerate() {
         let Some(g) = all.g_bound_between_tables(curve, y, u, law.k()) else {
-            continue;
+            break;
         };
         let x = end - u.exp();
-        if rel_diff(Some(1.0 + g.exp()), ratio(cache.node(cfg, law, x, y))) > cfg.tol {
+        let node = ratio(cache.node(cfg, law, x, y));
+        if rel_diff(Some(1.0 + g.exp()), node) > cfg.tol {
+            break;
+        }
+        // the default search near the node, as `--part bounds` asks at a row's nodes
+        let near = node.is_some_and(|f| f < cfg.agree_from)
+            || match default_search(cfg, law, x, y) {
+                Point::Failed => false,
+                p => rel_diff(ratio(p), node) <= cfg.bound_agree,
+            };
+        if !near {
             break;
         }
         last = Some((i, u.exp(), 1.0 + g.exp()));
