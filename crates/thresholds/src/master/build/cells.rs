@@ -144,14 +144,7 @@ pub fn sheared_checks(
         .filter(|&u| u >= u_range.0 && u <= hi)
         .collect();
     us.sort_by(|a, b| b.total_cmp(a));
-    let exact = |u: f64| {
-        let p = cache.node(cfg, law, end_mid - u.exp(), y_mid);
-        if v == 0 {
-            p.stick()
-        } else {
-            p.onset()
-        }
-    };
+    let exact = |u: f64| cache.node(cfg, law, end_mid - u.exp(), y_mid).ratio(v);
     Some(checked(
         us,
         &ys,
@@ -174,14 +167,7 @@ fn check_cell(on: &Checker, rows: &[RowData], j: usize) -> (CellData, bool) {
     };
     let mut cell = CellData::NONE;
     let mut ok = true;
-    let exact = |x: f64, y: f64, v: usize| {
-        let p = cache.node(cfg, law, x, y);
-        if v == 0 {
-            p.stick()
-        } else {
-            p.onset()
-        }
-    };
+    let exact = |x: f64, y: f64, v: usize| cache.node(cfg, law, x, y).ratio(v);
     // plain x
     let x_s_min = stencil.iter().map(|r| r.x_s).fold(f64::INFINITY, f64::min);
     for v in 0..2 {

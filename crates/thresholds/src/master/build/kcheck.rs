@@ -92,14 +92,7 @@ fn check_bin(
     else {
         return CellData::NONE;
     };
-    let exact = |x: f64, v: usize| {
-        let p = cache.node(cfg, law, x, y);
-        if v == 0 {
-            p.stick()
-        } else {
-            p.onset()
-        }
-    };
+    let exact = |x: f64, v: usize| cache.node(cfg, law, x, y).ratio(v);
     let mut cell = CellData::NONE;
     let mut lb = cell.d_lo;
     // plain x, from far from the end towards it
@@ -197,27 +190,30 @@ fn bound_limit(
     if !lo.is_finite() {
         return lo;
     }
-    let ratio = |p: Point| if v == 0 { p.stick() } else { p.onset() };
     let beyond: Vec<f64> = us.iter().copied().filter(|&u| u < lo.ln()).collect();
-    // the last check point that passed: its index, distance and ratio
+    // the last check point that passed: its index, distance and ratio; and the default search
+    // at the point where the limit stopped, where it was made
     let mut last: Option<(usize, f64, f64)> = None;
+    let mut searched: Option<Point> = None;
     for (i, &u) in beyond.iter().enumerate() {
         let Some(g) = all.g_bound_between_tables(curve, y, u, law.k()) else {
             break;
         };
         let x = end - u.exp();
-        let node = ratio(cache.node(cfg, law, x, y));
+        let node = cache.node(cfg, law, x, y).ratio(v);
         if rel_diff(Some(1.0 + g.exp()), node) > cfg.tol {
             break;
         }
-        // the default search near the node, as `--part bounds` asks at a row's nodes
-        let near = node.is_some_and(|f| f < cfg.agree_from)
-            || match default_search(cfg, law, x, y) {
-                Point::Failed => false,
-                p => rel_diff(ratio(p), node) <= cfg.bound_agree,
-            };
-        if !near {
-            break;
+        // the default search near the node, as `--part bounds` asks at a row's nodes (a
+        // search that failed is not near)
+        if !node.is_some_and(|f| f < cfg.agree_from) {
+            let theirs = default_search(cfg, law, x, y);
+            let near =
+                theirs != Point::Failed && rel_diff(theirs.ratio(v), node) <= cfg.bound_agree;
+            if !near {
+                searched = Some(theirs);
+                break;
+            }
         }
         last = Some((i, u.exp(), 1.0 + g.exp()));
     }
@@ -225,12 +221,13 @@ fn bound_limit(
         return lo;
     };
     let floor = at_lb * (1.0 - cfg.bound_agree);
-    let holds = beyond[i + 1..]
-        .iter()
-        .all(|&u| match default_search(cfg, law, end - u.exp(), y) {
-            Point::Failed => false,
-            p => ratio(p).is_none_or(|r| r >= floor),
-        });
+    let holds = beyond[i + 1..].iter().enumerate().all(|(j, &u)| {
+        let theirs = match searched {
+            Some(p) if j == 0 => p,
+            _ => default_search(cfg, law, end - u.exp(), y),
+        };
+        theirs.at_least(v, floor)
+    });
     if holds {
         lb
     } else {

@@ -229,6 +229,25 @@ impl Point {
             _ => None,
         }
     }
+
+    /// Ratio `v` (0: F, 1: F_on), where there is one.
+    pub fn ratio(self, v: usize) -> Option<f64> {
+        if v == 0 {
+            self.stick()
+        } else {
+            self.onset()
+        }
+    }
+
+    /// Whether this default search's ratio `v` is at least `floor`, or lies above its search
+    /// limit (no value): what a lower bound claims of the stretch closer to the end than its
+    /// limit (`revouch::Pass::Bounds`, the k checks). A search that failed proves nothing.
+    pub fn at_least(self, v: usize, floor: f64) -> bool {
+        match self {
+            Point::Failed => false,
+            p => p.ratio(v).is_none_or(|r| r >= floor),
+        }
+    }
 }
 
 /// The search at `(x, y)` (c_a clamped at `10^z_clamp`) with `opts` (its `v_max` set to

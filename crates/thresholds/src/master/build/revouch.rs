@@ -89,32 +89,38 @@ fn extend_piece(on: &Checker, pass: Pass, y: f64, end: f64, piece: &PieceData, v
     else {
         return d_lo;
     };
-    let ratio = |p: Point| if v == 0 { p.stick() } else { p.onset() };
     let (mut vouched, mut last) = (d_lo, first);
+    // the default search at the node where the limit stopped, where it was made
+    let mut searched: Option<Point> = None;
     for i in first + 1..n {
         let (a, b) = (nodes[i - 1].0, nodes[i].0);
         let u_mid = 0.5 * ((end - a).ln() + (end - b).ln());
-        let exact = cache.node(cfg, law, end - u_mid.exp(), y);
-        let midpoint_ok =
-            rel_diff(Some(interpolate(&nodes, end, v, u_mid)), ratio(exact)) <= cfg.tol;
-        let agrees = nodes[i].1[v] < cfg.agree_from
-            || pass.agrees(cfg, ratio(default_search(cfg, law, b, y)), nodes[i].1[v]);
-        if !(midpoint_ok && agrees) {
+        let exact = cache.node(cfg, law, end - u_mid.exp(), y).ratio(v);
+        if rel_diff(Some(interpolate(&nodes, end, v, u_mid)), exact) > cfg.tol {
             break;
+        }
+        // nodes far from the cliff are not compared (`BuildConfig::agree_from`; a node's ratios
+        // are finite, the reader refuses others)
+        if nodes[i].1[v] >= cfg.agree_from {
+            let theirs = default_search(cfg, law, b, y);
+            if !pass.agrees(cfg, theirs.ratio(v), nodes[i].1[v]) {
+                searched = Some(theirs);
+                break;
+            }
         }
         (vouched, last) = (end - b, i);
     }
     if pass == Pass::Bounds && last > first {
         // beyond the limit the answer claims "at least the ratio at the limit": the default
-        // search must not find less there (a search that failed proves nothing)
+        // search must not find less there
         let floor = nodes[last].1[v] * (1.0 - cfg.bound_agree);
-        let holds =
-            nodes[last + 1..]
-                .iter()
-                .all(|node| match default_search(cfg, law, node.0, y) {
-                    Point::Failed => false,
-                    p => ratio(p).is_none_or(|r| r >= floor),
-                });
+        let holds = nodes[last + 1..].iter().enumerate().all(|(j, node)| {
+            let theirs = match searched {
+                Some(p) if j == 0 => p,
+                _ => default_search(cfg, law, node.0, y),
+            };
+            theirs.at_least(v, floor)
+        });
         if !holds {
             return d_lo;
         }
