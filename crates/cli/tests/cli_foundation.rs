@@ -96,6 +96,8 @@ fn material_from_json_file() {
     let (code, _, err) = run(&["jkr", "--material", bad.to_str().unwrap()]);
     assert_eq!(code, 2);
     assert!(err.contains("poisson"), "{err}");
+    // and what a material file holds, with the units
+    assert!(err.contains(r#""density": kg/m^3"#), "{err}");
     std::fs::write(
         &bad,
         r#"{"gamma_sv": 0.1, "young": 7e9, "poisson": 0.25, "density": 930, "color": 1}"#,

@@ -133,17 +133,11 @@ impl Material {
             path: shown.clone(),
             message: e.to_string(),
         })?;
-        serde_json::from_str(&text).map_err(|e| ContactError::MaterialFile {
-            path: shown,
-            message: e.to_string(),
-        })
+        serde_json::from_str(&text).map_err(|e| unparsed(&e, &shown))
     }
 
     fn parse_json(json: &str, shown: &str) -> Result<Self, ContactError> {
-        let m: Self = serde_json::from_str(json).map_err(|e| ContactError::MaterialFile {
-            path: shown.into(),
-            message: e.to_string(),
-        })?;
+        let m: Self = serde_json::from_str(json).map_err(|e| unparsed(&e, shown))?;
         m.validate().map_err(|e| ContactError::MaterialFile {
             path: shown.into(),
             message: e.to_string(),
@@ -171,4 +165,16 @@ impl Material {
 /// Whether a material name is meant as a file path rather than a preset name.
 fn looks_like_path(name: &str) -> bool {
     name.contains(std::path::MAIN_SEPARATOR) || name.contains('/') || name.ends_with(".json")
+}
+
+/// What a material file holds, said after one that cannot be parsed.
+const MATERIAL_FILE_FORM: &str = r#"a material file is {"gamma_sv": J/m^2, "young": Pa, "poisson": dimensionless, "density": kg/m^3}"#;
+
+/// The error of a material file (or string) `shown` that JSON cannot parse into a material:
+/// serde's message (which names a missing or unknown field), then what the file should hold.
+fn unparsed(e: &serde_json::Error, shown: &str) -> ContactError {
+    ContactError::MaterialFile {
+        path: shown.into(),
+        message: format!("{e} ({MATERIAL_FILE_FORM})"),
+    }
 }

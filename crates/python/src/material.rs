@@ -3,7 +3,7 @@
 use crate::error::{value_error, Error};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyType};
+use pyo3::types::{PyBool, PyString, PyType};
 use std::path::PathBuf;
 
 /// The four material constants of the model, in SI units.
@@ -127,13 +127,35 @@ impl Material {
 #[pymethods]
 impl Material {
     #[new]
-    #[pyo3(signature = (gamma_sv, young, poisson, density))]
+    #[pyo3(signature = (gamma_sv, young=None, poisson=None, density=None))]
     fn new(
         gamma_sv: &Bound<'_, PyAny>,
-        young: &Bound<'_, PyAny>,
-        poisson: &Bound<'_, PyAny>,
-        density: &Bound<'_, PyAny>,
+        young: Option<&Bound<'_, PyAny>>,
+        poisson: Option<&Bound<'_, PyAny>>,
+        density: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        // a name or a file alone where the four numbers belong: say which call takes it
+        let alone = young.is_none() && poisson.is_none() && density.is_none();
+        if alone && (gamma_sv.is_instance_of::<PyString>() || gamma_sv.hasattr("__fspath__")?) {
+            return Err(PyTypeError::new_err(format!(
+                "Material({}): Material takes the four constants gamma_sv (J/m^2), young (Pa), \
+                 poisson and density (kg/m^3); for a preset (co2, h2o) or a JSON file use \
+                 Material.named({0})",
+                gamma_sv.repr()?
+            )));
+        }
+        let missing: Vec<&str> = [("young", young), ("poisson", poisson), ("density", density)]
+            .iter()
+            .filter(|(_, v)| v.is_none())
+            .map(|(name, _)| *name)
+            .collect();
+        let (Some(young), Some(poisson), Some(density)) = (young, poisson, density) else {
+            return Err(PyTypeError::new_err(format!(
+                "Material() missing {}: it takes the four constants gamma_sv (J/m^2), young (Pa), \
+                 poisson and density (kg/m^3)",
+                missing.join(", ")
+            )));
+        };
         Self::checked(thresholds::Material {
             gamma_sv: si(gamma_sv, "gamma_sv", "J/m2")?,
             young: si(young, "young", "Pa")?,

@@ -78,6 +78,13 @@ def test_bad_values_name_the_argument_and_element():
         st.collide(CO2, t_vis=0.0, v_in=1.0)
     with pytest.raises(ValueError, match=r"^young = -1\.0: must be > 0"):
         st.Material(gamma_sv=0.1, young=-1.0, poisson=0.25, density=930.0)
+    # a preset's name or a file given to the constructor points to Material.named
+    with pytest.raises(TypeError, match=r"Material\.named\('iron'\)"):
+        st.Material("iron")
+    with pytest.raises(TypeError, match=r"missing poisson, density: it takes the four constants"):
+        st.Material(0.1, 7e9)
+    with pytest.raises(TypeError, match=r"^gamma_sv: expected a number, got str"):
+        st.Material("0.1", 7e9, 0.25, 930.0)
     with pytest.raises(ValueError, match="radius2 and wall"):
         st.jkr(CO2, radius2=1e-6, wall=True)
     with pytest.raises(ValueError, match="cannot be broadcast"):
