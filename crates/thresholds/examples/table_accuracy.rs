@@ -10,7 +10,8 @@
 //! range once the k checks cover it, else one of the tables' own k), to measure the tables
 //! where they exist; without it, the tables' coverage of the whole k range 0.005-0.05 is
 //! counted first (without searching the points they decline); with `TABLE_DECLINED=1` in the
-//! environment each declined point is printed to stderr (`D x y k x_s` and where it lies).
+//! environment each declined point is printed to stderr (`D x y k x_s` and where it lies);
+//! `TABLE_SEED=n` draws other points (2026 by default, the draw of the numbers quoted).
 //! Each point draws gamma_SV (0.01-0.3 J/m^2), E (0.5-200 GPa), the density (500-5000 kg/m^3),
 //! the reduced radius R (5 nm - 1 cm) and k (0.005-0.05) log-uniformly, nu (0.1-0.45)
 //! uniformly, two identical spheres (R1 = 2R) or a sphere on a wall (R1 = R), and T_vis
@@ -45,7 +46,9 @@ fn main() {
     let n: usize = args.next().map_or(20000, |s| s.parse().unwrap());
     let sample: usize = args.next().map_or(2000, |s| s.parse().unwrap());
     let answered = args.next().as_deref() == Some("answered");
-    let mut rng = Rng(2026);
+    // the draw's seed: that of the numbers in docs/performance.md unless TABLE_SEED says another
+    let seed = std::env::var("TABLE_SEED").map_or(2026, |s| s.parse().unwrap());
+    let mut rng = Rng(seed);
     let points: Vec<Point> = (0..n).map(|_| draw(&mut rng, answered)).collect();
     if !answered {
         // coverage of the whole domain, without searching what the tables decline
