@@ -136,12 +136,20 @@ impl Material {
     ) -> PyResult<Self> {
         // a name or a file alone where the four numbers belong: say which call takes it
         let alone = young.is_none() && poisson.is_none() && density.is_none();
-        if alone && (gamma_sv.is_instance_of::<PyString>() || gamma_sv.hasattr("__fspath__")?) {
+        let call = if gamma_sv.is_instance_of::<PyString>() {
+            Some("named")
+        } else if gamma_sv.hasattr("__fspath__")? {
+            Some("from_json")
+        } else {
+            None
+        };
+        if let Some(call) = call.filter(|_| alone) {
             return Err(PyTypeError::new_err(format!(
-                "Material({}): Material takes the four constants gamma_sv (J/m^2), young (Pa), \
-                 poisson and density (kg/m^3); for a preset (co2, h2o) or a JSON file use \
-                 Material.named({0})",
-                gamma_sv.repr()?
+                "Material({0}): Material takes the four constants gamma_sv (J/m^2), young (Pa), \
+                 poisson and density (kg/m^3); for a preset ({1}) or a JSON file use \
+                 Material.{call}({0})",
+                gamma_sv.repr()?,
+                thresholds::PRESETS
             )));
         }
         let missing: Vec<&str> = [("young", young), ("poisson", poisson), ("density", density)]

@@ -2,6 +2,7 @@
 
 import dataclasses
 import math
+import pathlib
 import pickle
 import warnings
 
@@ -81,6 +82,8 @@ def test_bad_values_name_the_argument_and_element():
     # a preset's name or a file given to the constructor points to Material.named
     with pytest.raises(TypeError, match=r"Material\.named\('iron'\)"):
         st.Material("iron")
+    with pytest.raises(TypeError, match=r"Material\.from_json\("):
+        st.Material(pathlib.Path("ice.json"))
     with pytest.raises(TypeError, match=r"missing poisson, density: it takes the four constants"):
         st.Material(0.1, 7e9)
     with pytest.raises(TypeError, match=r"^gamma_sv: expected a number, got str"):

@@ -57,7 +57,7 @@ pub mod stick;
 pub mod sweep;
 mod text;
 
-pub use contact::{Contact, ContactError, Geometry, Material, Warning, JKR_QUANTITIES};
+pub use contact::{Contact, ContactError, Geometry, Material, Warning, JKR_QUANTITIES, PRESETS};
 pub use dynamics::{
     Collider, Collision, DynamicsError, Method, Outcome, SolverOptions, StickingCriterion,
     TrajectoryPoint,
