@@ -16,6 +16,18 @@ TABLE_REL_TOL = 1e-5
 def test_default_is_the_table_and_search_is_one_keyword_away():
     assert st.v_stick("co2", 60e-6, 1e-9).method == "table"
     assert st.v_stick("co2", 60e-6, 1e-9, method="search").method == "search"
+    assert st.v_stick("co2", 60e-6, 1e-9, method="Search").method == "search"  # any case
+
+
+def test_a_wrong_method_names_the_argument_and_the_choices():
+    with pytest.raises(ValueError, match=r"^method = 'exact': must be 'search' or 'table'$"):
+        st.v_stick("co2", 60e-6, 1e-9, method="exact")
+    with pytest.raises(TypeError, match=r"^method = 3: must be a string, 'search' or 'table'$"):
+        st.v_frag("co2", 60e-6, 1e-9, method=3)
+    with pytest.raises(ValueError, match=r"^method = 'search': must be 'ode' or 'table'$"):
+        st.collide("co2", 60e-6, 1e-9, 0.05, method="search")
+    with pytest.raises(TypeError, match=r"^method = None: must be a string, 'ode' or 'table'$"):
+        st.collide("co2", 60e-6, 1e-9, 0.05, method=None)
 
 
 def test_table_matches_the_search_over_materials_sizes_and_geometries():

@@ -159,8 +159,17 @@ def method(value: Any) -> str:
     """``"search"`` or ``"table"``."""
     if type(value) is str and value in METHODS:  # spelt as they are (no lower() to call)
         return value
-    if not isinstance(value, str) or value.lower() not in METHODS:
-        raise ValueError(f"method = {value!r}: must be 'search' or 'table'")
+    return choice("method", value, METHODS)
+
+
+def choice(name: str, value: Any, names: Sequence[str]) -> str:
+    """``value`` among ``names`` in any case, lowered; ``TypeError`` for what is no string,
+    ``ValueError`` for another string, each naming ``name`` and the choices."""
+    allowed = " or ".join(repr(n) for n in names)
+    if not isinstance(value, str):
+        raise TypeError(f"{name} = {value!r}: must be a string, {allowed}")
+    if value.lower() not in names:
+        raise ValueError(f"{name} = {value!r}: must be {allowed}")
     return value.lower()
 
 

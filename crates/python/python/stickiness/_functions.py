@@ -86,9 +86,8 @@ def collide(
     m = _args.material(material)
     wall = _args.geometry(radius2, wall)
     trajectory = _args.flag("trajectory", trajectory)
-    if not isinstance(method, str) or method.lower() not in ("ode", "table"):
-        raise ValueError(f"method = {method!r}: must be 'ode' or 'table'")
-    core_method = "table" if method.lower() == "table" else "search"
+    table = _args.choice("method", method, ("ode", "table")) == "table"
+    core_method = "table" if table else "search"
     if v_in is None:
         raise TypeError("collide() missing required argument: 'v_in' (m/s)")
     t = _args.t_vis(t_vis, t_vis_law, radius, None)
