@@ -177,13 +177,21 @@ fn main() -> ExitCode {
         Command::Test {
             rust_only,
             python_only,
-        } => xtask::test::run_tests(
-            &workspace_root(),
-            xtask::test::Parts {
+        } => {
+            let start = Instant::now();
+            let parts = xtask::test::Parts {
                 rust: !python_only,
                 python: !rust_only,
-            },
-        ),
+            };
+            // one closing line, after the interleaved logs of the parts run side by side
+            xtask::test::run_tests(&workspace_root(), parts).map(|()| {
+                eprintln!(
+                    "cargo xtask test: all green ({}) in {:.0} s",
+                    parts.described(),
+                    start.elapsed().as_secs_f64()
+                )
+            })
+        }
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

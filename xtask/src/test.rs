@@ -94,6 +94,21 @@ pub struct Parts {
     pub python: bool,
 }
 
+impl Parts {
+    /// What these parts run, for the closing line of `cargo xtask test`.
+    pub fn described(self) -> &'static str {
+        match (self.rust, self.python) {
+            (true, true) => {
+                "the Rust tests, the tables' checks, pytest, the docstrings' examples, the \
+                 notebook and the site"
+            }
+            (true, false) => "the Rust tests and the tables' checks",
+            (false, true) => "pytest, the docstrings' examples, the notebook and the site",
+            (false, false) => "nothing",
+        }
+    }
+}
+
 /// Runs `cmd`, echoing it; an error naming it when it fails.
 pub fn run(cmd: &mut Command) -> Result<(), Error> {
     eprintln!("+ {}", shown(cmd));
