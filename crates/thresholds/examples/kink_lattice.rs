@@ -14,6 +14,7 @@
 
 use rayon::prelude::*;
 use thresholds::master::build::{node, BuildConfig};
+use thresholds::master::interp::lagrange_weight;
 use thresholds::{CrackLaw, MasterTables, SearchOptions};
 
 #[allow(dead_code)]
@@ -25,14 +26,9 @@ use domain::{draw, Rng};
 /// The points drawn, as `table_accuracy` draws them (its seed), of which the declined are probed.
 const POINTS: usize = 20000;
 
-/// The Lagrange weights of the four nodes `xs` at `x`.
+/// The Lagrange weights of the four nodes `xs` at `x`, as the tables weigh their nodes.
 fn weights4(xs: [f64; 4], x: f64) -> [f64; 4] {
-    std::array::from_fn(|j| {
-        (0..4)
-            .filter(|&m| m != j)
-            .map(|m| (x - xs[m]) / (xs[j] - xs[m]))
-            .product()
-    })
+    std::array::from_fn(|j| lagrange_weight(&xs, j, x))
 }
 
 /// The four lattice nodes of spacing `h` around `x` (x in the middle interval).

@@ -62,8 +62,9 @@ pub(crate) fn lagrange(xs: &[f64], ys: &[f64], x: f64) -> f64 {
 }
 
 /// The Lagrange basis polynomial of node `j` of `xs` at `x` (one division): the weight of
-/// `ys[j]` in [`lagrange`].
-pub(crate) fn lagrange_weight(xs: &[f64], j: usize, x: f64) -> f64 {
+/// `ys[j]` in the interpolant through `(xs, ys)` (public for the examples that interpolate
+/// reference nodes the same way, `kink_lattice`).
+pub fn lagrange_weight(xs: &[f64], j: usize, x: f64) -> f64 {
     let (mut num, mut den) = (1.0, 1.0);
     for (m, &xm) in xs.iter().enumerate() {
         if m != j {

@@ -63,7 +63,7 @@ pub mod build;
 pub mod ends;
 mod file;
 pub mod format;
-pub(crate) mod interp;
+pub mod interp;
 mod parse;
 mod table;
 mod verdict;

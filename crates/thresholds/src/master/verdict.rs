@@ -50,6 +50,8 @@ impl Eval {
     }
 }
 
+/// Which side of the search limit `f_max` (a ratio to V_stick,JKR) `e` puts its ratio on, with
+/// [`V_MAX_MARGIN`] for a value and the bound's own margin for a lower bound.
 pub(super) fn side(e: Eval, f_max: f64) -> Side {
     match e {
         Eval::Value(g) => {

@@ -7,7 +7,7 @@
 //! interval's lower-bound limit (`bound_limit`).
 
 use super::cells::SHEARED_REACH;
-use super::{default_search, rel_diff, BuildConfig, Cache, Point};
+use super::{default_search, default_search_at_least, rel_diff, BuildConfig, Cache, Point};
 use crate::master::binary::Table;
 use crate::master::ends::EndCurves;
 use crate::master::format::{CellData, EndsData, TableData};
@@ -221,14 +221,8 @@ fn bound_limit(
         return lo;
     };
     let floor = at_lb * (1.0 - cfg.bound_agree);
-    let holds = beyond[i + 1..].iter().enumerate().all(|(j, &u)| {
-        let theirs = match searched {
-            Some(p) if j == 0 => p,
-            _ => default_search(cfg, law, end - u.exp(), y),
-        };
-        theirs.at_least(v, floor)
-    });
-    if holds {
+    let xs = beyond[i + 1..].iter().map(|&u| end - u.exp());
+    if default_search_at_least(cfg, law, y, v, floor, xs, searched) {
         lb
     } else {
         lo

@@ -301,6 +301,28 @@ pub fn default_search(cfg: &BuildConfig, law: &CrackLaw, x: f64, y: f64) -> Poin
     search(cfg, law, x, y, 2.0 * F_TOP, &SearchOptions::exact())
 }
 
+/// Whether the default search at each of the points `xs` (at `y`) finds ratio `v` at least
+/// `floor`, or nothing below its search limit ([`Point::at_least`]): what a lower bound claims
+/// of the stretch beyond its limit (`revouch::Pass::Bounds`, the k checks). `first` is the
+/// default search already made at the first point, if it was (where the limit stopped).
+pub fn default_search_at_least(
+    cfg: &BuildConfig,
+    law: &CrackLaw,
+    y: f64,
+    v: usize,
+    floor: f64,
+    xs: impl IntoIterator<Item = f64>,
+    first: Option<Point>,
+) -> bool {
+    xs.into_iter().enumerate().all(|(j, x)| {
+        let theirs = match first {
+            Some(p) if j == 0 => p,
+            _ => default_search(cfg, law, x, y),
+        };
+        theirs.at_least(v, floor)
+    })
+}
+
 /// Nodes computed so far in one table's build, keyed by `(x, y)` to 1e-12: rows and cell checks
 /// share them.
 #[derive(Default)]

@@ -30,7 +30,7 @@
 
 use super::cells::{last_passing, sheared_checks, Checker};
 use super::row::interpolate;
-use super::{agrees, default_search, rel_diff, BuildConfig, Cache, Point};
+use super::{agrees, default_search, default_search_at_least, rel_diff, BuildConfig, Cache, Point};
 use crate::master::ends::EndCurves;
 use crate::master::format::{CellData, EndsData, PieceData, RowData, TableData};
 use crate::master::interp::stencil_start;
@@ -114,14 +114,8 @@ fn extend_piece(on: &Checker, pass: Pass, y: f64, end: f64, piece: &PieceData, v
         // beyond the limit the answer claims "at least the ratio at the limit": the default
         // search must not find less there
         let floor = nodes[last].1[v] * (1.0 - cfg.bound_agree);
-        let holds = nodes[last + 1..].iter().enumerate().all(|(j, node)| {
-            let theirs = match searched {
-                Some(p) if j == 0 => p,
-                _ => default_search(cfg, law, node.0, y),
-            };
-            theirs.at_least(v, floor)
-        });
-        if !holds {
+        let beyond = nodes[last + 1..].iter().map(|node| node.0);
+        if !default_search_at_least(cfg, law, y, v, floor, beyond, searched) {
             return d_lo;
         }
     }
