@@ -3,7 +3,7 @@
 //! `tests/master_table.rs` (which holds them to the search there; it includes this file).
 
 use thresholds::restitution::RestitutionTables;
-use thresholds::{Contact, Geometry, MasterTables, Material};
+use thresholds::{Contact, Geometry, MasterTables, Material, SearchOptions};
 
 /// SplitMix64: a small deterministic generator, so that a run is repeatable.
 pub struct Rng(pub u64);
@@ -63,6 +63,18 @@ pub struct Point {
     pub k: f64,
     /// T_vis (s).
     pub t_vis: f64,
+}
+
+impl Point {
+    /// Where the master tables look the point up: x = log10 c_D, y = log10(c_D c_a), and the
+    /// default search limit as a ratio, f_max = v_max / V_stick,JKR.
+    #[allow(dead_code)] // the restitution tables' example and test do not look it up
+    pub fn table_coordinates(&self) -> (f64, f64, f64) {
+        let d = self.contact.dimensionless(self.t_vis);
+        let jkr = self.contact.v_stick_jkr();
+        let f_max = SearchOptions::default().v_max_for(jkr) / jkr;
+        (d.c_d.log10(), (d.c_d * d.c_a).log10(), f_max)
+    }
 }
 
 /// A point: gamma_SV (0.01-0.3 J/m^2), E (0.5-200 GPa), the density (500-5000 kg/m^3) and the

@@ -18,7 +18,9 @@
 //!    body elsewhere;
 //! 4. each ratio is compared with f_max: clearly below (an answer), clearly above (no
 //!    bouncing / no double collision below v_max), or within [`V_MAX_MARGIN`] of it (the search
-//!    decides).
+//!    decides);
+//! 5. where steps 1-4 decline, a floor of both ratios from the nodes of the next table up in k
+//!    may still say "nothing below v_max" ([`super::floor`]).
 
 use super::binary::Table;
 use super::format::{CELL_LIMITS, LOWER_BOUND_OFFSET};
@@ -317,6 +319,23 @@ impl MasterTables {
     /// (= v_max / V_stick,JKR): `Some((F, F_on))` with `None` for a ratio above `f_max`, or
     /// `None` where the tables do not vouch for the answer.
     pub(crate) fn answer(
+        &self,
+        x: f64,
+        y: f64,
+        k: f64,
+        f_max: f64,
+    ) -> Option<(Option<f64>, Option<f64>)> {
+        if !(x.is_finite() && y.is_finite() && f_max > 0.0) {
+            return None;
+        }
+        // where the interpolation declines (next to the kink), the nodes' floor may still say
+        // "nothing below v_max" ([`super::floor`])
+        self.interpolate(x, y, k, f_max)
+            .or_else(|| self.node_verdict(x, y, k, f_max).map(|()| (None, None)))
+    }
+
+    /// [`MasterTables::answer`] without the nodes' floor (steps 1-4).
+    pub(crate) fn interpolate(
         &self,
         x: f64,
         y: f64,

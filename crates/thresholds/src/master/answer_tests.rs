@@ -43,7 +43,7 @@ fn far_inside_the_plain_region_the_answer_needs_no_ends() {
                 "x = {x}, y = {y}, k = {k}, f_max = {f_max}"
             );
         }
-        assert_eq!(t.answer(x, y, k, f_max), full);
+        assert_eq!(t.interpolate(x, y, k, f_max), full);
     }
     assert!(inside * 3 >= n, "{inside} of {n} inside");
 }

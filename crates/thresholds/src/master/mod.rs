@@ -39,7 +39,9 @@
 //!   than vouched, a ratio is at least its value at the closest vouched point; and where a
 //!   table was checked against its exact nodes closer still but the default search strays
 //!   from them (`build::revouch`, `--part bounds`), at least its value there, which answers
-//!   "nothing below the search limit" with a margin of 1 % ([`BOUND_MARGIN`]).
+//!   "nothing below the search limit" with a margin of 1 % ([`BOUND_MARGIN`]). Next to the
+//!   kink where the two kinds of bouncing meet, where no interpolation is vouched for, a floor
+//!   under both ratios read off the nodes ([`floor`]) answers that too, with the same margin.
 //! - **The JKR corner.** Where c_a > 1e8 (T_vis below about 1e-14 s for 60 um CO2, grains of a
 //!   centimetre at 1e-16 s) the exact search needs millions of steps or is refused, while F has
 //!   converged in c_a to a few 1e-7: the nodes there are computed at c_a = 1e8 and the tables
@@ -62,6 +64,7 @@ pub mod binary;
 pub mod build;
 pub mod ends;
 mod file;
+pub mod floor;
 pub mod format;
 pub mod interp;
 mod parse;
@@ -217,6 +220,17 @@ impl MasterTables {
     /// [`MasterTables::ratios`] at `x = log10 c_D`, `y = log10 (c_D c_a)`.
     pub fn ratios_at(&self, x: f64, y: f64, k: f64, f_max: f64) -> Option<Ratios> {
         let (s, o) = self.answer(x, y, k, f_max)?;
+        Some(Ratios {
+            v_stick: s,
+            v_double_onset: o,
+        })
+    }
+
+    /// [`MasterTables::ratios_at`] from the interpolation alone, without the nodes' floor
+    /// ([`floor`]): what the tables answered before it, for the tests and checks that tell
+    /// the floor's verdicts apart.
+    pub fn interpolated_at(&self, x: f64, y: f64, k: f64, f_max: f64) -> Option<Ratios> {
+        let (s, o) = self.interpolate(x, y, k, f_max)?;
         Some(Ratios {
             v_stick: s,
             v_double_onset: o,
