@@ -31,7 +31,7 @@ use super::MasterTables;
 
 /// Two k closer than this (relative) are the same k: a query at a table's own k uses that table
 /// alone.
-const SAME_K: f64 = 1e-12;
+pub(super) const SAME_K: f64 = 1e-12;
 
 /// How many tables of neighbouring k answer a k between tables: six, the quintic in ln k
 /// through them. Measured at the middle of the k intervals (tables 2^(1/3) apart in k): the cubic

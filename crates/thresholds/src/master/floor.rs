@@ -25,6 +25,7 @@
 //! where the interpolation declines its verdicts are the default search's
 //! (`tests/master_floor.rs`; `examples/node_floor.rs` for the full count).
 
+use super::answer::SAME_K;
 use super::binary::{Piece, Row, Table};
 use super::verdict::{side, Eval, Side, BOUND_MARGIN};
 use super::MasterTables;
@@ -76,8 +77,8 @@ impl MasterTables {
     pub fn node_floor(&self, x: f64, y: f64, k: f64) -> [Option<f64>; 2] {
         let ks = self.table_k();
         // the last table at or below k and the first at or above (one table at its own k, to
-        // within rounding as `answer::SAME_K`)
-        let same = |t: f64| (k - t).abs() < 1e-12 * t;
+        // within rounding, SAME_K)
+        let same = |t: f64| (k - t).abs() < SAME_K * t;
         let below = ks.iter().rposition(|&t| t <= k || same(t));
         let above = ks.iter().position(|&t| t >= k || same(t));
         let floor = |i: Option<usize>| match i.and_then(|i| self.table(i)) {
@@ -102,5 +103,67 @@ impl MasterTables {
         };
         let [f, f_on] = self.node_floor(x, y, k);
         (above(f) && above(f_on)).then_some(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A row ending at x_s = 1 (x_on = 1.002) with body nodes at x = -1, 0, 0.5, 0.9 and F =
+    /// F_on = `f` there, nothing bouncing beyond the ends below `beyond`.
+    fn row(y: f64, f: [f64; 4], beyond: f64) -> Row {
+        let (x_s, xs): (f64, [f64; 4]) = (1.0, [-1.0, 0.0, 0.5, 0.9]);
+        // nodes in decreasing x: u = ln(x_s - x) increasing
+        let u: Vec<f64> = xs.iter().rev().map(|x| (x_s - x).ln()).collect();
+        let g: Vec<f64> = f.iter().rev().map(|f| (f - 1.0).ln()).collect();
+        Row {
+            y,
+            x_s,
+            x_on: 1.002,
+            monotone: false,
+            mono: 20.0,
+            beyond,
+            body: Piece {
+                u: u.into(),
+                g: [g.clone().into(), g.into()],
+                ..Piece::default()
+            },
+            strip: Piece::default(),
+        }
+    }
+
+    fn ratio(g: Option<f64>) -> Option<f64> {
+        g.map(|g| 1.0 + g.exp())
+    }
+
+    /// On a row: the least node from the last one at or below x to the end (a row that falls
+    /// towards its end counts its fall), the checked level past the end, nothing below the
+    /// first node or past an unchecked end; between two rows, the smaller.
+    #[test]
+    fn the_least_node_towards_the_end_and_the_smaller_row() {
+        let r = row(0.0, [10.0, 30.0, 20.0, 100.0], 9990.0);
+        let at = |x: f64| ratio(row_floor(&r, 0, x)).map(|f| (f * 1e9).round() / 1e9);
+        assert_eq!(at(-0.5), Some(10.0));
+        assert_eq!(at(0.2), Some(20.0)); // node 30 at x = 0, but 20 at x = 0.5 nearer the end
+        assert_eq!(at(0.7), Some(20.0));
+        assert_eq!(at(0.95), Some(100.0));
+        assert_eq!(at(1.5), Some(9990.0));
+        assert_eq!(at(-2.0), None);
+        assert_eq!(row_floor(&row(0.0, [10.0; 4], 0.0), 0, 1.5), None);
+        // F_on between x_s and x_on: the strip, empty here
+        assert_eq!(row_floor(&r, 1, 1.001), None);
+        let t = Table {
+            k: 0.01,
+            ys: vec![0.0, 0.5],
+            rows: vec![r.clone(), row(0.5, [5.0, 50.0, 60.0, 70.0], 9990.0)],
+            cells: Vec::new(),
+            y_bins: Vec::new(),
+        };
+        let [f, f_on] = t.node_floor(0.2, 0.25).map(ratio);
+        assert!((f.unwrap() - 20.0).abs() < 1e-9 && (f_on.unwrap() - 20.0).abs() < 1e-9);
+        assert!((ratio(t.node_floor(0.6, 0.4)[0]).unwrap() - 20.0).abs() < 1e-9);
+        assert!((ratio(t.node_floor(-0.5, 0.1)[0]).unwrap() - 5.0).abs() < 1e-9);
+        assert_eq!(t.node_floor(0.2, 0.6), [None, None]);
     }
 }
