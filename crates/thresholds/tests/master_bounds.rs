@@ -74,7 +74,9 @@ fn assert_the_searchs_verdict(law: &CrackLaw, x: f64, y: f64, f_max: f64) {
 /// distance log-uniform from 1e-6 to 5e-4 (through the tables' lower-bound band and beyond it,
 /// to the end) or uniform between x_s and the end of F_on (x_on). Where the tables answer with
 /// their lower bounds and did not without them, each is checked against the exact search
-/// ([`assert_the_searchs_verdict`]); how many there were.
+/// ([`assert_the_searchs_verdict`]); how many there were. Where the nodes' floor answers
+/// (`master::floor`, the interpolation declining), it is checked too, not counted (measured
+/// 2026-11-27: none at k = 0.01, 370 at the tables' own k, 220 at random k, all the search's).
 fn check_the_band(
     n: usize,
     seed: u64,
@@ -96,11 +98,15 @@ fn check_the_band(
         } else {
             e.x_s + (e.x_on - e.x_s) * rng.next()
         };
-        // the interpolation's answers only (the nodes' floor, which answers some of these
-        // points too, has its own tests)
-        if with.interpolated_at(x, y, k, f_max).is_none()
-            || without.interpolated_at(x, y, k, f_max).is_some()
-        {
+        // the nodes' floor answers some of these points too: its verdicts are the search's as
+        // well, but the count is of the interpolation's answers from lower bounds
+        if with.interpolated_at(x, y, k, f_max).is_none() {
+            if with.ratios_at(x, y, k, f_max).is_some() {
+                assert_the_searchs_verdict(&CrackLaw::new(k).unwrap(), x, y, f_max);
+            }
+            continue;
+        }
+        if without.interpolated_at(x, y, k, f_max).is_some() {
             continue;
         }
         from_bounds += 1;

@@ -19,7 +19,7 @@
 //! 4. each ratio is compared with f_max: clearly below (an answer), clearly above (no
 //!    bouncing / no double collision below v_max), or within [`V_MAX_MARGIN`] of it (the search
 //!    decides);
-//! 5. where steps 1-4 decline, a floor of both ratios from the nodes of the next table up in k
+//! 5. where steps 1-4 decline, a floor of both ratios from the nodes of the two tables around k
 //!    may still say "nothing below v_max" ([`super::floor`]).
 
 use super::binary::Table;
