@@ -1,5 +1,6 @@
 //! Is the nodes' floor (`master::floor`) below the threshold wherever it is high enough to
-//! answer? At random points where the floor of both ratios exceeds `floor_min`, the reference
+//! answer? At random points where the floor of both ratios exceeds `floor_min` (and is at most
+//! `floor_max`, if given: above 9000 a floor is mostly a row's level beyond its end), the reference
 //! search of the nodes at the point against the floor: a floor above its F or F_on (by more
 //! than 1e-6) is a failure. (Not the default search: beyond the cliff, at F near F_TOP, it
 //! finds spurious bouncing now and then, e.g. F = 9607 at x = 2.281, y = -5.212, k = 0.033,
@@ -12,6 +13,7 @@
 //!
 //! ```sh
 //! cargo run --release -p thresholds --example node_floor -- 400 500   # points a draw, floor_min
+//! cargo run --release -p thresholds --example node_floor -- 400 500 9000   # and floor_max
 //! ```
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
@@ -58,8 +60,16 @@ fn failures(points: &[[f64; 3]], label: &str) -> usize {
                 .then(|| format!("  {x:.5} {y:.5} {k:.5}: floor {f:?} {f_on:?}, search {s} {o}"))
         })
         .collect();
+    // a floor above 9000 is mostly a row's level beyond its end, not a node's ratio
+    let from_nodes = points
+        .iter()
+        .filter(|&&[x, y, k]| {
+            let [f, f_on] = tables.node_floor(x, y, k);
+            f.zip(f_on).is_some_and(|(f, o)| f.max(o) <= 9000.0)
+        })
+        .count();
     println!(
-        "{label}: {} points, the floor above the search at {}",
+        "{label}: {} points ({from_nodes} with both floors from nodes, at most 9000), the floor above the search at {}",
         points.len(),
         bad.len()
     );
@@ -73,10 +83,12 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let n: usize = args.next().map_or(400, |s| s.parse().unwrap());
     let floor_min: f64 = args.next().map_or(500.0, |s| s.parse().unwrap());
+    let floor_max: f64 = args.next().map_or(f64::INFINITY, |s| s.parse().unwrap());
     let tables = MasterTables::standard();
     let high = |x: f64, y: f64, k: f64| {
         let [f, f_on] = tables.node_floor(x, y, k);
-        f.zip(f_on).is_some_and(|(f, o)| f.min(o) >= floor_min)
+        f.zip(f_on)
+            .is_some_and(|(f, o)| f.min(o) >= floor_min && f.max(o) <= floor_max)
     };
     // the box around the kink
     let mut rng = Rng(12345);

@@ -20,24 +20,33 @@ mod domain;
 use domain::{draw, Rng};
 
 /// At random points around the kink (x from -1.5 to 2.3, y from -5.6 to -3, k log-uniform
-/// 0.005-0.05: where the interpolation declines most) whose floor of both ratios is at least
-/// 500, the reference search of the nodes (`master::build::node`: rel_tol 1e-8, collisions at
-/// rtol 1e-10) finds both ratios at least the floor. (`examples/node_floor.rs`: 0 of 2000
-/// points above, 1000 of them with any floor.)
+/// 0.005-0.05 or a table's own: where the interpolation declines most) whose floor of both
+/// ratios lies between 500 and 9000 (read off nodes, not a row's level beyond its end), the
+/// reference search of the nodes (`master::build::node`: rel_tol 1e-8, collisions at rtol
+/// 1e-10) finds both ratios at least the floor. (`examples/node_floor.rs`: none above at 2800
+/// points, 1000 around the kink and 1000 over the whole domain with any floor, 400 and 400
+/// with a floor of at least 500.)
 #[test]
 fn the_node_floor_is_below_the_reference_search() {
     let tables = MasterTables::standard();
     let mut rng = Rng(4242);
+    let ks = tables.table_k().to_vec();
     let points: Vec<[f64; 3]> = std::iter::repeat_with(|| {
         let x = -1.5 + 3.8 * rng.next();
         let y = -5.6 + 2.6 * rng.next();
-        [x, y, rng.log_uniform(0.005, 0.05)]
+        let k = if rng.next() < 0.5 {
+            ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+        } else {
+            rng.log_uniform(0.005, 0.05)
+        };
+        [x, y, k]
     })
     .filter(|&[x, y, k]| {
         let [f, f_on] = tables.node_floor(x, y, k);
-        f.zip(f_on).is_some_and(|(f, o)| f.min(o) >= 500.0)
+        f.zip(f_on)
+            .is_some_and(|(f, o)| f.min(o) >= 500.0 && f.max(o) <= 9000.0)
     })
-    .take(12)
+    .take(16)
     .collect();
     let cfg = BuildConfig::standard();
     points.par_iter().for_each(|&[x, y, k]| {

@@ -66,14 +66,19 @@ pub struct Point {
 }
 
 impl Point {
-    /// Where the master tables look the point up: x = log10 c_D, y = log10(c_D c_a), and the
-    /// default search limit as a ratio, f_max = v_max / V_stick,JKR.
+    /// Where the master tables look the point up: x = log10 c_D, y = log10(c_D c_a) (from the
+    /// product, as the library's answer takes it), and the default search limit as a ratio,
+    /// f_max = v_max / V_stick,JKR.
     #[allow(dead_code)] // the restitution tables' example and test do not look it up
     pub fn table_coordinates(&self) -> (f64, f64, f64) {
-        let d = self.contact.dimensionless(self.t_vis);
+        let c_d = self.contact.drag_number(self.t_vis);
         let jkr = self.contact.v_stick_jkr();
         let f_max = SearchOptions::default().v_max_for(jkr) / jkr;
-        (d.c_d.log10(), (d.c_d * d.c_a).log10(), f_max)
+        (
+            c_d.log10(),
+            self.contact.drag_crack_product().log10(),
+            f_max,
+        )
     }
 }
 

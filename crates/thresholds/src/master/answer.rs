@@ -19,8 +19,9 @@
 //! 4. each ratio is compared with f_max: clearly below (an answer), clearly above (no
 //!    bouncing / no double collision below v_max), or within [`V_MAX_MARGIN`] of it (the search
 //!    decides);
-//! 5. where steps 1-4 decline, a floor of both ratios from the nodes of the two tables around k
-//!    may still say "nothing below v_max" ([`super::floor`]).
+//! 5. where steps 1-4 decline and put neither ratio below the limit, a floor of both ratios from
+//!    the nodes of the two tables around k may still say "nothing below v_max"
+//!    ([`super::floor`]).
 
 use super::binary::Table;
 use super::format::{CELL_LIMITS, LOWER_BOUND_OFFSET};
@@ -328,10 +329,18 @@ impl MasterTables {
         if !(x.is_finite() && y.is_finite() && f_max > 0.0) {
             return None;
         }
+        if let Some((stick, onset)) = self.sides(x, y, k, f_max) {
+            if let Some(answer) = both(stick, onset) {
+                return Some(answer);
+            }
+            // a ratio the interpolation puts below the limit is not overruled by a floor
+            if matches!(stick, Side::Below(_)) || matches!(onset, Side::Below(_)) {
+                return None;
+            }
+        }
         // where the interpolation declines (next to the kink), the nodes' floor may still say
         // "nothing below v_max" ([`super::floor`])
-        self.interpolate(x, y, k, f_max)
-            .or_else(|| self.node_verdict(x, y, k, f_max).map(|()| (None, None)))
+        self.node_verdict(x, y, k, f_max).then_some((None, None))
     }
 
     /// [`MasterTables::answer`] without the nodes' floor (steps 1-4).
@@ -345,22 +354,23 @@ impl MasterTables {
         if !(x.is_finite() && y.is_finite() && f_max > 0.0) {
             return None;
         }
-        let ks = self.k_stencil(k, y)?;
-        if let Some(answer) = self.plain_inside(&ks, x, y, f_max) {
-            return Some(answer);
-        }
-        self.answer_with_ends(&ks, x, y, k, f_max)
+        let (stick, onset) = self.sides(x, y, k, f_max)?;
+        both(stick, onset)
     }
 
-    /// [`MasterTables::answer`] from the end curves at (y, k), wherever x lies.
-    fn answer_with_ends(
-        &self,
-        ks: &KStencil,
-        x: f64,
-        y: f64,
-        k: f64,
-        f_max: f64,
-    ) -> Option<(Option<f64>, Option<f64>)> {
+    /// What the interpolation says of each ratio (steps 1-4): far inside the plain region
+    /// without the end curves, else with them; `None` without a stencil of tables at (k, y).
+    fn sides(&self, x: f64, y: f64, k: f64, f_max: f64) -> Option<(Side, Side)> {
+        let ks = self.k_stencil(k, y)?;
+        if let Some((stick, onset)) = self.plain_inside(&ks, x, y, f_max) {
+            let side = |r: Option<f64>| r.map_or(Side::Above, Side::Below);
+            return Some((side(stick), side(onset)));
+        }
+        Some(self.sides_with_ends(&ks, x, y, k, f_max))
+    }
+
+    /// What the end curves at (y, k) and the stencil say of each ratio, wherever x lies.
+    fn sides_with_ends(&self, ks: &KStencil, x: f64, y: f64, k: f64, f_max: f64) -> (Side, Side) {
         let ends = self.ends().and_then(|e| e.at(y, k));
         let beyond = |end: Option<f64>| {
             // past its end a ratio exceeds the level up to which the rows were checked for no
@@ -396,7 +406,7 @@ impl MasterTables {
             let e = on_strip.unwrap_or_else(|| self.eval(ks, Curve::OnsetBody, x, y, x_s));
             side(e, f_max)
         });
-        both(stick, onset)
+        (stick, onset)
     }
 }
 

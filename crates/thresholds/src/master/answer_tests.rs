@@ -32,7 +32,8 @@ fn far_inside_the_plain_region_the_answer_needs_no_ends() {
         let Some(ks) = t.k_stencil(k, y) else {
             continue;
         };
-        let full = t.answer_with_ends(&ks, x, y, k, f_max);
+        let (stick, onset) = t.sides_with_ends(&ks, x, y, k, f_max);
+        let full = both(stick, onset);
         // a stencil of its own: nothing kept from the full answer's evaluation
         let fresh = t.k_stencil(k, y).expect("as above");
         if let Some(short) = t.plain_inside(&fresh, x, y, f_max) {

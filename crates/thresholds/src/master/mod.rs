@@ -39,9 +39,10 @@
 //!   than vouched, a ratio is at least its value at the closest vouched point; and where a
 //!   table was checked against its exact nodes closer still but the default search strays
 //!   from them (`build::revouch`, `--part bounds`), at least its value there, which answers
-//!   "nothing below the search limit" with a margin of 1 % ([`BOUND_MARGIN`]). Next to the
-//!   kink where the two kinds of bouncing meet, where no interpolation is vouched for, a floor
-//!   under both ratios read off the nodes ([`floor`]) answers that too, with the same margin.
+//!   "nothing below the search limit" with a margin of 1 % ([`BOUND_MARGIN`]). Wherever the
+//!   interpolation declines (next to the kink where the two kinds of bouncing meet, the band at
+//!   the cliff), a floor under both ratios read off the nodes ([`floor`]) answers that too,
+//!   with the same margin, for search limits up to [`floor::FLOOR_F_MAX`].
 //! - **The JKR corner.** Where c_a > 1e8 (T_vis below about 1e-14 s for 60 um CO2, grains of a
 //!   centimetre at 1e-16 s) the exact search needs millions of steps or is refused, while F has
 //!   converged in c_a to a few 1e-7: the nodes there are computed at c_a = 1e8 and the tables
