@@ -50,6 +50,9 @@ pub const K_STENCIL: usize = 6;
 /// below 8e-7.
 pub const K_STENCIL_EDGE: usize = 7;
 
+/// The tables' answer: `(F, F_on)`, `None` for a ratio above the search limit.
+pub(crate) type Answer = (Option<f64>, Option<f64>);
+
 /// A plain pair kept: `((y, x), [g F, g F_on])`.
 type PlainPair = ((f64, f64), Option<[f64; 2]>);
 
@@ -319,16 +322,7 @@ impl MasterTables {
     /// Both ratios at x = log10 c_D, y = log10(c_D c_a), k, with the search limit `f_max`
     /// (= v_max / V_stick,JKR): `Some((F, F_on))` with `None` for a ratio above `f_max`, or
     /// `None` where the tables do not vouch for the answer.
-    pub(crate) fn answer(
-        &self,
-        x: f64,
-        y: f64,
-        k: f64,
-        f_max: f64,
-    ) -> Option<(Option<f64>, Option<f64>)> {
-        if !(x.is_finite() && y.is_finite() && f_max > 0.0) {
-            return None;
-        }
+    pub(crate) fn answer(&self, x: f64, y: f64, k: f64, f_max: f64) -> Option<Answer> {
         if let Some((stick, onset)) = self.sides(x, y, k, f_max) {
             if let Some(answer) = both(stick, onset) {
                 return Some(answer);
@@ -344,23 +338,18 @@ impl MasterTables {
     }
 
     /// [`MasterTables::answer`] without the nodes' floor (steps 1-4).
-    pub(crate) fn interpolate(
-        &self,
-        x: f64,
-        y: f64,
-        k: f64,
-        f_max: f64,
-    ) -> Option<(Option<f64>, Option<f64>)> {
-        if !(x.is_finite() && y.is_finite() && f_max > 0.0) {
-            return None;
-        }
+    pub(crate) fn interpolate(&self, x: f64, y: f64, k: f64, f_max: f64) -> Option<Answer> {
         let (stick, onset) = self.sides(x, y, k, f_max)?;
         both(stick, onset)
     }
 
     /// What the interpolation says of each ratio (steps 1-4): far inside the plain region
-    /// without the end curves, else with them; `None` without a stencil of tables at (k, y).
+    /// without the end curves, else with them; `None` without a stencil of tables at (k, y)
+    /// or for a point or limit that is not finite and positive.
     fn sides(&self, x: f64, y: f64, k: f64, f_max: f64) -> Option<(Side, Side)> {
+        if !(x.is_finite() && y.is_finite() && f_max > 0.0) {
+            return None;
+        }
         let ks = self.k_stencil(k, y)?;
         if let Some((stick, onset)) = self.plain_inside(&ks, x, y, f_max) {
             let side = |r: Option<f64>| r.map_or(Side::Above, Side::Below);

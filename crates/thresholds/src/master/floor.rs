@@ -108,10 +108,10 @@ fn row_floor(r: &Row, v: usize, x: f64) -> Option<f64> {
 impl Table {
     /// Lower bounds `[g F, g F_on]` (g = ln(ratio - 1)) at (x, y) from the nodes of the two rows
     /// around y (steps 2 and 3 of [`super::floor`]); `None` for a ratio the rows cannot bound
-    /// there (y outside the rows, x below their nodes or too close to their ends).
+    /// there (y outside the rows, x below their nodes or not finite).
     pub fn node_floor(&self, x: f64, y: f64) -> [Option<f64>; 2] {
         let n = self.ys.len();
-        if n < 2 || !(y >= self.ys[0] && y <= self.ys[n - 1]) {
+        if n < 2 || !x.is_finite() || !(y >= self.ys[0] && y <= self.ys[n - 1]) {
             return [None, None];
         }
         let j = interval(&self.ys, y);
