@@ -239,6 +239,7 @@ mod tests {
         assert!((f.unwrap() - dip).abs() < 1e-6 && (f_on.unwrap() - dip).abs() < 1e-6);
         assert!((ratio(t.node_floor(-0.5, 0.1)[0]).unwrap() - 5.0).abs() < 1e-9);
         assert_eq!(t.node_floor(0.2, 0.6), [None, None]);
+        assert_eq!(t.node_floor(f64::NAN, 0.25), [None, None]);
     }
 
     /// The tables around k: at a table's own k (to within [`SAME_K`]) that table's floor alone;
