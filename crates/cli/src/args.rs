@@ -64,7 +64,9 @@ impl BulkOverrides {
 pub struct NamedMaterial {
     /// As given: a preset name or the path of the file.
     pub given: String,
-    /// For titles: the preset name, or the file's stem.
+    /// For titles: the preset name, or the file's stem, with the overridden constants named
+    /// (`co2 (young, density overridden)`): a title must not call a material of other
+    /// constants by a preset's name alone.
     pub short: String,
     /// The constants (SI), validated.
     pub material: Material,
@@ -124,12 +126,20 @@ impl Overrides {
                 _ => e.into(),
             });
         }
-        let short = match file {
+        let mut short = match file {
             Some(path) => Path::new(path)
                 .file_stem()
                 .map_or_else(|| path.to_string(), |s| s.to_string_lossy().into_owned()),
             None => name.to_ascii_lowercase(),
         };
+        let overridden: Vec<&str> = self
+            .flags()
+            .iter()
+            .filter_map(|(f, v)| v.map(|_| *f))
+            .collect();
+        if !overridden.is_empty() {
+            short = format!("{short} ({} overridden)", overridden.join(", "));
+        }
         Ok(NamedMaterial {
             given: name.to_string(),
             short,

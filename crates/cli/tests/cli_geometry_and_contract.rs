@@ -96,6 +96,14 @@ fn material_command() {
     assert_eq!(f(&j["gamma_sv"]), 0.08);
     let j = json_of("material h2o --density 917 --json");
     assert_eq!(f(&j["density"]), 917.0);
+    // a title does not call other constants by the preset's name alone
+    let (_, text, _) = run_line("material h2o --density 917 --young 5e9");
+    assert!(text.contains("h2o (young, density overridden)"), "{text}");
+    let (_, text, _) = run_line("v-stick --t-vis 1e-9 --gamma-sv 0.1");
+    assert!(
+        text.contains("of 60 um of co2 (gamma_sv overridden)"),
+        "{text}"
+    );
     for key in ["gamma_sv", "young", "poisson", "density"] {
         assert!(j[key].is_number(), "{key}");
     }
@@ -224,7 +232,9 @@ fn material_file_errors_name_the_file() {
     let (code, text, _) = run(&["jkr", "--material", p, "--density", "930"]);
     assert_eq!(code, 0);
     assert!(
-        text.starts_with("JKR contact of two identical spheres of 60 um of ice\n"),
+        text.starts_with(
+            "JKR contact of two identical spheres of 60 um of ice (density overridden)\n"
+        ),
         "{text}"
     );
     let (code, _, err) = run(&["jkr", "--material", p, "--density", "-1"]);
