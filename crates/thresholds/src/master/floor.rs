@@ -26,9 +26,9 @@
 //! default search strays from the nodes and the interpolation declines. The monotony is not
 //! proven but checked: at 2574 random points (around the kink and over the whole domain, 1688
 //! of them with floors read off nodes; `examples/node_floor.rs`) the floor lies below the
-//! reference search, and its verdicts are
-//! the exact search's at the 14 points of 2e4 of the whole domain it answers and at 590 points
-//! of the band at the cliff (`tests/master_floor.rs`, `tests/master_bounds.rs`).
+//! reference search, and its verdicts are the exact search's at the 14 points of 2e4 of the
+//! whole domain it answers and at 590 points of the band at the cliff (`tests/master_floor.rs`,
+//! `tests/master_bounds.rs`).
 
 use super::answer::SAME_K;
 use super::binary::{Piece, Row, Table};
