@@ -10,7 +10,10 @@
 //!
 //! ```sh
 //! cargo run --release -p thresholds --example kind_stencil -- 0 0.5   # shift, reach
+//! cargo run --release -p thresholds --example kind_stencil -- 0 0.5 2000   # random band points
 //! ```
+//! With a third number, that many random points of the band around the kink (x -1.6 to 2.4,
+//! y -6 to -3, k log-uniform 0.005-0.05) that the tables decline at f_max = 1000 instead.
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use rayon::prelude::*;
@@ -81,17 +84,30 @@ fn main() {
     let reach: f64 = args.next().map_or(0.5, |s| s.parse().unwrap());
     let tables = MasterTables::standard();
     let ks = tables.table_k().to_vec();
+    let box_points: usize = args.next().map_or(0, |s| s.parse().unwrap());
     let mut rng = domain::Rng(2026);
-    let points: Vec<[f64; 3]> = (0..20000)
-        .map(|_| domain::draw(&mut rng, false))
-        .filter_map(|p| {
-            let (x, y, f_max) = p.table_coordinates();
-            tables
-                .ratios_at(x, y, p.k, f_max)
-                .is_none()
-                .then_some([x, y, p.k])
+    let points: Vec<[f64; 3]> = if box_points == 0 {
+        (0..20000)
+            .map(|_| domain::draw(&mut rng, false))
+            .filter_map(|p| {
+                let (x, y, f_max) = p.table_coordinates();
+                tables
+                    .ratios_at(x, y, p.k, f_max)
+                    .is_none()
+                    .then_some([x, y, p.k])
+            })
+            .collect()
+    } else {
+        // random points of the band around the kink that the tables decline (f_max 1000)
+        std::iter::repeat_with(|| {
+            let x = -1.6 + 4.0 * rng.next();
+            let y = -6.0 + 3.0 * rng.next();
+            [x, y, rng.log_uniform(0.005, 0.05)]
         })
-        .collect();
+        .filter(|&[x, y, k]| tables.ratios_at(x, y, k, 1000.0).is_none())
+        .take(box_points)
+        .collect()
+    };
     let cfg = BuildConfig::standard();
     let lines: Vec<(String, Option<f64>)> = points
         .par_iter()
