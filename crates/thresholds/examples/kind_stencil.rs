@@ -26,6 +26,8 @@ use thresholds::{CrackLaw, MasterTables};
 #[allow(dead_code)]
 #[path = "common/domain.rs"]
 mod domain;
+#[path = "common/misses.rs"]
+mod misses;
 
 /// Whether body node `q` of `r` is of the first kind (a window of double collisions: F_on < F).
 fn first_kind(r: &Row, q: usize) -> bool {
@@ -162,20 +164,9 @@ fn main() {
             )
         })
         .collect();
-    for (l, _) in &lines {
-        println!("{l}");
-    }
-    let within = |tol: f64| {
-        lines
-            .iter()
-            .filter(|(_, m)| m.is_some_and(|m| m <= tol))
-            .count()
-    };
+    let (with, tight, loose) = misses::tally(&lines);
     println!(
-        "shift {shift}, reach {reach}: {} points declined, {} with an estimate; within 2e-6: {}, within 1e-5: {}",
-        lines.len(),
-        lines.iter().filter(|(_, m)| m.is_some()).count(),
-        within(2e-6),
-        within(1e-5)
+        "shift {shift}, reach {reach}: {} points declined, {with} with an estimate; within 2e-6: {tight}, within 1e-5: {loose}",
+        lines.len()
     );
 }
