@@ -38,10 +38,11 @@ fn search(x: f64, y: f64, k: f64, reference: bool) -> (f64, f64) {
         default_search(&cfg, &law, x, y)
     };
     match point {
-        Point::Bounce { f_stick, f_onset } => (f_stick, f_onset),
-        Point::OnsetOnly { f_onset } => (f64::INFINITY, f_onset),
-        Point::NoBounce => (f64::INFINITY, f64::INFINITY),
         Point::Failed => (f64::NAN, f64::NAN),
+        p => (
+            p.ratio(0).unwrap_or(f64::INFINITY),
+            p.ratio(1).unwrap_or(f64::INFINITY),
+        ),
     }
 }
 
