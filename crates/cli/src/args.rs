@@ -289,15 +289,8 @@ impl TVisArgs {
                 CliError::Usage("one of --t-vis or --t-vis-law is required".into())
             })?,
         };
-        if !(t_vis.is_finite() && t_vis >= 0.0) {
-            return Err(numerics::OutOfRange::new(
-                "t_vis",
-                t_vis,
-                ">= 0 and finite (0 is the JKR limit)",
-                "s",
-            )
-            .into());
-        }
+        // the range is the library's to check: 0 (the JKR limit) is a threshold's answer but no
+        // collision, and each says so in its own message
         setup.with_input("t_vis", t_vis);
         Ok(t_vis)
     }

@@ -8,6 +8,7 @@ mod args;
 mod commands;
 mod error;
 mod hyphen;
+mod not_a_number;
 mod output;
 mod progress;
 
@@ -69,9 +70,15 @@ fn main() -> ExitCode {
     let cli = match Cli::try_parse_from(&argv) {
         Ok(cli) => cli,
         // a flag taken as the value of the option before it explains a failure better
-        Err(e) => hyphen::flag_as_value(&mut Cli::command(), &argv)
-            .unwrap_or(e)
-            .exit(),
+        Err(e) => {
+            if let Some(line) = not_a_number::message(&Cli::command(), &e) {
+                eprintln!("error: {line}");
+                return ExitCode::from(2);
+            }
+            hyphen::flag_as_value(&mut Cli::command(), &argv)
+                .unwrap_or(e)
+                .exit()
+        }
     };
     let result = match &cli.command {
         Command::CrackLaw(a) => commands::crack_law::run(a),

@@ -68,6 +68,51 @@ fn bad_input_names_the_flag_and_range() {
     assert!(err.contains("co2, h2o") && err.contains("JSON"), "{err}");
 }
 
+/// A value that is not a number is bad input like any other: exit code 2 and one line naming
+/// the flag, the value and what the flag takes (its help line), not clap's three lines.
+#[test]
+fn a_value_that_is_not_a_number_is_named_in_one_line() {
+    for (line, expected) in [
+        (
+            "v-stick --radius abc --t-vis 1e-9",
+            "--radius = abc: not a number; Radius R1",
+        ),
+        (
+            "collide --t-vis x --v-in 0.01",
+            "--t-vis = x: not a number; Viscoelastic",
+        ),
+        (
+            "v-stick --k 0.0x --t-vis 1e-9",
+            "--k = 0.0x: not a number; Ratio of relaxed",
+        ),
+    ] {
+        let (code, out, err) = run_line(line);
+        assert_eq!(code, 2, "{line}: {err}");
+        assert!(out.is_empty(), "{line}: {out}");
+        assert_eq!(err.trim().lines().count(), 1, "{line}: {err}");
+        assert!(err.contains(expected), "{line}: {err}");
+    }
+}
+
+/// collide needs T_vis > 0 and says so for a negative one too (not the thresholds' ">= 0").
+#[test]
+fn collide_names_its_own_range_of_t_vis() {
+    for line in [
+        "collide --t-vis -1 --v-in 0.01",
+        "collide --t-vis 0 --v-in 0.01",
+    ] {
+        let (code, _, err) = run_line(line);
+        assert_eq!(code, 2, "{line}: {err}");
+        assert!(
+            err.contains("--t-vis") && err.contains("must be > 0"),
+            "{line}: {err}"
+        );
+    }
+    let (code, _, err) = run_line("v-stick --t-vis -1");
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("must be >= 0"), "{err}");
+}
+
 /// A material file with the four SI constants works like a preset (H2O of Section 5.2 here);
 /// a missing or unknown field is named.
 #[test]
