@@ -28,8 +28,13 @@ pub fn k_checks(
     ends: &EndsData,
     progress: &(dyn Fn(&str) + Sync),
 ) -> Result<EndsData, ThresholdsError> {
-    let (y0, dy, ny) = ends.kcheck_y;
+    // the bins of this build's width (`BuildConfig::kcheck_dy`) over the span of y the end
+    // curves set for them
+    let (y0, dy0, ny0) = ends.kcheck_y;
+    let dy = cfg.kcheck_dy;
+    let ny = (dy0 * ny0 as f64 / dy - 1e-9).ceil().max(0.0) as usize;
     let mut open = ends.clone();
+    open.kcheck_y = (y0, dy, ny);
     // no restriction while checking
     let everywhere = CellData {
         x_hi: [f64::INFINITY; 2],
