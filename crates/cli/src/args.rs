@@ -24,7 +24,7 @@ pub struct MaterialArgs {
 /// Overrides of the four material constants (SI).
 #[derive(Debug, Clone, Args)]
 pub struct Overrides {
-    /// Override the surface free energy gamma_SV (J/m^2); the work of adhesion is 2 gamma_SV.
+    /// Override the surface free energy gamma_SV (J/m^2, > 0); the work of adhesion is 2 gamma_SV.
     #[arg(long, allow_hyphen_values = true)]
     pub gamma_sv: Option<f64>,
     #[command(flatten)]
@@ -34,13 +34,13 @@ pub struct Overrides {
 /// Overrides of the three bulk constants (SI); `sweep` takes gamma_SV as an axis instead.
 #[derive(Debug, Clone, Args)]
 pub struct BulkOverrides {
-    /// Override Young's modulus E (Pa).
+    /// Override Young's modulus E (Pa, > 0).
     #[arg(long, allow_hyphen_values = true)]
     pub young: Option<f64>,
     /// Override the Poisson ratio nu (dimensionless, -1 < nu < 0.5).
     #[arg(long, allow_hyphen_values = true)]
     pub poisson: Option<f64>,
-    /// Override the density rho (kg/m^3).
+    /// Override the density rho (kg/m^3, > 0).
     #[arg(long, allow_hyphen_values = true)]
     pub density: Option<f64>,
 }
@@ -158,10 +158,10 @@ impl MaterialArgs {
 /// The two bodies: a sphere of `--radius` and one of `--radius2`, or a wall.
 #[derive(Debug, Clone, Args)]
 pub struct GeometryArgs {
-    /// Radius R1 of the (first) sphere (m).
+    /// Radius R1 of the (first) sphere (m, > 0).
     #[arg(long, default_value = "0.00006", allow_hyphen_values = true)]
     pub radius: f64,
-    /// Radius R2 of the second sphere (m); default: equal to --radius (identical spheres).
+    /// Radius R2 of the second sphere (m, > 0); default: equal to --radius (identical spheres).
     #[arg(long, allow_hyphen_values = true)]
     pub radius2: Option<f64>,
     /// The sphere hits a flat wall of the same material (R2 -> infinity).
@@ -326,7 +326,7 @@ impl PointArgs {
 /// The threshold-search settings shared by v-stick, fit-t-vis, v-frag and sweep.
 #[derive(Debug, Clone, Args)]
 pub struct SearchArgs {
-    /// Relative tolerance of the threshold brackets (dimensionless).
+    /// Relative tolerance of the threshold brackets (dimensionless, 1e-15 < rel_tol < 0.5).
     #[arg(long, default_value = "1e-6", allow_hyphen_values = true)]
     pub rel_tol: f64,
     /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; at most 10000.0).
