@@ -9,7 +9,8 @@ use clap::error::{ContextKind, ContextValue, ErrorKind};
 use clap::Command;
 
 /// One line for a value that does not parse (`--radius = abc: not a number; Radius R1 of the
-/// (first) sphere (m)`), or `None` for any other error.
+/// (first) sphere (m, > 0)`; `--jobs = 1.5: not a whole number; ...`), or `None` for any other
+/// error.
 pub fn message(cmd: &Command, e: &clap::Error) -> Option<String> {
     if e.kind() != ErrorKind::ValueValidation {
         return None;
@@ -29,5 +30,8 @@ pub fn message(cmd: &Command, e: &clap::Error) -> Option<String> {
         .find(|a| a.get_long() == Some(long.as_str()))
         .and_then(|a| a.get_help().map(|h| h.to_string()))?;
     let help = help.lines().next()?.trim_end_matches('.');
-    Some(format!("--{long} = {value}: not a number; {help}"))
+    // a count (`--jobs`) takes a whole number
+    let whole = std::error::Error::source(e).is_some_and(|s| s.is::<std::num::ParseIntError>());
+    let what = if whole { "a whole number" } else { "a number" };
+    Some(format!("--{long} = {value}: not {what}; {help}"))
 }
