@@ -85,6 +85,11 @@ fn a_value_that_is_not_a_number_is_named_in_one_line() {
             "v-stick --k 0.0x --t-vis 1e-9",
             "--k = 0.0x: not a number; Ratio of relaxed",
         ),
+        // refused while parsing: no file is made
+        (
+            "sweep --jobs 1.5 --t-vis 1e-9 --out never.csv",
+            "--jobs = 1.5: not a whole number",
+        ),
     ] {
         let (code, out, err) = run_line(line);
         assert_eq!(code, 2, "{line}: {err}");
