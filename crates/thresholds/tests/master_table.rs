@@ -11,43 +11,14 @@ use greenwood::CrackLaw;
 use thresholds::master::binary::Table;
 use thresholds::master::{ends_to_text, table_to_text, MasterTables};
 use thresholds::paper::MUSIOLIK_2016A;
-use thresholds::{
-    fit_t_vis, sticking_thresholds, SearchOptions, StickingThresholds, ThresholdMethod,
-};
+use thresholds::{fit_t_vis, sticking_thresholds, SearchOptions, ThresholdMethod};
 
 mod common;
+use common::agree::{assert_agree, checked_table_answer};
 #[path = "../examples/common/domain.rs"]
 mod domain;
 
 use domain::Rng;
-
-/// The table's answer and the search's agree: both thresholds within 1e-5, and the same
-/// verdict where there is no bouncing (or no double collision) below the search limit.
-fn assert_agree(t: &StickingThresholds, s: &StickingThresholds, what: &str) {
-    let close = |a: Option<f64>, b: Option<f64>| match (a, b) {
-        (Some(a), Some(b)) => (a / b - 1.0).abs() < 1e-5,
-        (a, b) => a == b,
-    };
-    assert!(close(t.v_stick, s.v_stick), "{what}: {t:?} vs {s:?}");
-    assert!(
-        close(t.v_double_onset, s.v_double_onset),
-        "{what}: {t:?} vs {s:?}"
-    );
-}
-
-/// The tables' answer at the synthetic point `(x, y)` of `k`, if they give one, once it is
-/// checked against the exact search there ([`assert_agree`]).
-fn checked_table_answer(x: f64, y: f64, k: f64) -> Option<StickingThresholds> {
-    let (c, t_vis) = thresholds::master::build::synthetic(x, y, 1.0).unwrap();
-    let law = CrackLaw::new(k).unwrap();
-    let t = sticking_thresholds(&c, &law, t_vis, &SearchOptions::default()).unwrap();
-    if t.method != ThresholdMethod::Table {
-        return None;
-    }
-    let s = sticking_thresholds(&c, &law, t_vis, &SearchOptions::exact()).unwrap();
-    assert_agree(&t, &s, &format!("x = {x}, y = {y}, k = {k}"));
-    Some(t)
-}
 
 /// 80 points of the domain of the "Instant everywhere" issue: gamma_SV 0.01-0.3 J/m^2,
 /// E 0.5-200 GPa, nu 0.1-0.45, density 500-5000 kg/m^3, reduced radius 5 nm - 1 cm, two
@@ -189,28 +160,6 @@ fn the_lowest_cells_agree_with_the_search() {
         .count();
     // measured: 16 of 16 (0 of 16 before)
     assert!(answered * 4 >= 3 * n, "answered {answered} of {n}");
-}
-
-/// In the first and the last interval of k the sextic through seven tables answers
-/// (`K_STENCIL_EDGE`): at points where the quintic through six missed the exact search by up
-/// to 2.6e-6 (so the k checks refused it), the tables now answer, within 1e-5 of the exact
-/// search ([`checked_table_answer`]). The points: the ones `examples/table_accuracy.rs` listed
-/// as declined before (2026-11-27), F = 17 to 720.
-#[test]
-fn the_end_intervals_of_k_agree_with_the_search() {
-    let points = [
-        (-1.094788, -4.095806, 0.046104),
-        (-1.099735, -3.959702, 0.047059),
-        (-1.383768, -4.348049, 0.049542),
-        (-1.067420, -3.850801, 0.044004),
-        (-0.742408, -4.014833, 0.005686),
-        (-0.351498, -2.810375, 0.005560),
-    ];
-    let answered = points
-        .iter()
-        .filter(|&&(x, y, k)| checked_table_answer(x, y, k).is_some())
-        .count();
-    assert!(answered >= 5, "answered {answered} of {}", points.len());
 }
 
 /// Next to the kink of the cliff (where the two kinds of bouncing meet and the end curves are

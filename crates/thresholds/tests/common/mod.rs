@@ -3,6 +3,8 @@
 
 #![allow(dead_code, clippy::unwrap_used, clippy::expect_used)]
 
+pub mod agree;
+
 use std::path::PathBuf;
 use thresholds::master::format::{parse_ends, parse_table, EndsData, TableData};
 
