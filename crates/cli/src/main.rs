@@ -71,13 +71,15 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         // a flag taken as the value of the option before it explains a failure better
         Err(e) => {
-            if let Some(line) = not_a_number::message(&Cli::command(), &e) {
+            if let Some(flag) = hyphen::flag_as_value(&mut Cli::command(), &argv) {
+                flag.exit()
+            }
+            // a value that is not a number, in one line as all other bad input
+            if let Some(line) = not_a_number::message(&Cli::command(), &argv, &e) {
                 eprintln!("error: {line}");
                 return ExitCode::from(2);
             }
-            hyphen::flag_as_value(&mut Cli::command(), &argv)
-                .unwrap_or(e)
-                .exit()
+            e.exit()
         }
     };
     let result = match &cli.command {

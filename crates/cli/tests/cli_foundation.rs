@@ -69,53 +69,91 @@ fn bad_input_names_the_flag_and_range() {
 }
 
 /// A value that is not a number is bad input like any other: exit code 2 and one line naming
-/// the flag, the value and what the flag takes (its help line), not clap's three lines.
+/// the flag, the value and what the flag takes (its help line), not clap's three lines; a flag
+/// taken for the value of the option before it is named as such first.
 #[test]
 fn a_value_that_is_not_a_number_is_named_in_one_line() {
-    for (line, expected) in [
+    let dir = TempDir::new("not-a-number");
+    let out_file = dir.join("never.csv");
+    let sweep = |jobs: &str| {
+        let mut args = vec!["sweep", "--jobs", jobs, "--t-vis", "1e-9", "--out"];
+        args.push(out_file.to_str().unwrap());
+        args.into_iter().map(String::from).collect::<Vec<_>>()
+    };
+    let words = |line: &str| {
+        line.split_whitespace()
+            .map(String::from)
+            .collect::<Vec<_>>()
+    };
+    for (args, expected) in [
+        (words("v-stick --radius abc --t-vis 1e-9"), "--radius = abc: not a number; Radius R1"),
+        (words("collide --t-vis x --v-in 0.01"), "--t-vis = x: not a number; Viscoelastic"),
+        (words("v-stick --k 0.0x --t-vis 1e-9"), "--k = 0.0x: not a number; Ratio of relaxed"),
+        (sweep("1.5"), "--jobs = 1.5: not a whole number"),
+        (sweep("99999999999999999999999"), "too large"),
         (
-            "v-stick --radius abc --t-vis 1e-9",
-            "--radius = abc: not a number; Radius R1",
+            words("--json collide --t-vis --v-in=0.1"),
+            "a value is required for '--t-vis <T_VIS>' but none was supplied (found the flag '--v-in=0.1')",
         ),
-        (
-            "collide --t-vis x --v-in 0.01",
-            "--t-vis = x: not a number; Viscoelastic",
-        ),
-        (
-            "v-stick --k 0.0x --t-vis 1e-9",
-            "--k = 0.0x: not a number; Ratio of relaxed",
-        ),
-        // refused while parsing: no file is made
-        (
-            "sweep --jobs 1.5 --t-vis 1e-9 --out never.csv",
-            "--jobs = 1.5: not a whole number",
-        ),
+        (words("v-stick --radius --help"), "(found the flag '--help')"),
     ] {
-        let (code, out, err) = run_line(line);
-        assert_eq!(code, 2, "{line}: {err}");
-        assert!(out.is_empty(), "{line}: {out}");
-        assert_eq!(err.trim().lines().count(), 1, "{line}: {err}");
-        assert!(err.contains(expected), "{line}: {err}");
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(out.is_empty(), "{args:?}: {out}");
+        assert!(err.contains(expected), "{args:?}: {err}");
+        // clap's own message (with its usage) names a flag taken for a value
+        if !expected.contains("found the flag") {
+            assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+        }
     }
+    // refused while parsing: no file is made
+    assert!(!out_file.exists());
 }
 
-/// collide needs T_vis > 0 and says so for a negative one too (not the thresholds' ">= 0").
+/// The range of T_vis is each command's: `collide` needs T_vis > 0 (0 is no collision), the
+/// thresholds take 0 (the JKR limit); NaN and infinities are refused by all, and `collide
+/// --trajectory` leaves its file as it was when T_vis or V_in is bad input.
 #[test]
-fn collide_names_its_own_range_of_t_vis() {
-    for line in [
-        "collide --t-vis -1 --v-in 0.01",
-        "collide --t-vis 0 --v-in 0.01",
-    ] {
-        let (code, _, err) = run_line(line);
-        assert_eq!(code, 2, "{line}: {err}");
+fn each_command_names_its_own_range_of_t_vis() {
+    for t in ["-1", "0", "nan", "inf", "-inf"] {
+        let (code, _, err) = run(&["collide", "--t-vis", t, "--v-in", "0.01"]);
+        assert_eq!(code, 2, "{t}: {err}");
         assert!(
             err.contains("--t-vis") && err.contains("must be > 0"),
-            "{line}: {err}"
+            "{t}: {err}"
         );
     }
-    let (code, _, err) = run_line("v-stick --t-vis -1");
-    assert_eq!(code, 2, "{err}");
-    assert!(err.contains("must be >= 0"), "{err}");
+    for command in ["v-stick", "v-frag"] {
+        for t in ["-1", "nan", "inf", "-inf"] {
+            let (code, _, err) = run(&[command, "--t-vis", t]);
+            assert_eq!(code, 2, "{command} {t}: {err}");
+            assert!(
+                err.contains("--t-vis") && err.contains("must be >= 0"),
+                "{command} {t}: {err}"
+            );
+        }
+    }
+    let dir = TempDir::new("trajectory-bad-input");
+    let kept = dir.join("kept.csv");
+    std::fs::write(&kept, "kept\n").unwrap();
+    let made = dir.join("made.csv");
+    for (t, v) in [("nan", "0.01"), ("1e-9", "-1")] {
+        for path in [&kept, &made] {
+            let args = [
+                "collide",
+                "--t-vis",
+                t,
+                "--v-in",
+                v,
+                "--trajectory",
+                path.to_str().unwrap(),
+            ];
+            let (code, _, err) = run(&args);
+            assert_eq!(code, 2, "{args:?}: {err}");
+        }
+    }
+    assert_eq!(std::fs::read_to_string(&kept).unwrap(), "kept\n");
+    assert!(!made.exists());
 }
 
 /// A material file with the four SI constants works like a preset (H2O of Section 5.2 here);

@@ -60,19 +60,22 @@ pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
         CollideMethod::Ode => thresholds::ThresholdMethod::Search,
         CollideMethod::Table => thresholds::ThresholdMethod::Table,
     };
-    // open the trajectory file first: a path that cannot be written is bad input, found at once
-    let file = match &args.trajectory {
-        Some(path) => Some(std::fs::File::create(path).map_err(|e| {
-            CliError::Usage(format!(
-                "--trajectory {}: cannot write the file: {e}",
-                path.display()
-            ))
-        })?),
-        None => None,
+    let cannot_write = |path: &std::path::Path, e: std::io::Error| {
+        CliError::Usage(format!(
+            "--trajectory {}: cannot write the file: {e}",
+            path.display()
+        ))
     };
+    // a path that cannot be written is bad input, found before the collision; the file is
+    // written (and an existing one replaced) only once the collision is done, so that bad
+    // input (T_vis or V_in out of range) leaves it as it was
+    if let Some(path) = &args.trajectory {
+        writable(path).map_err(|e| cannot_write(path, e))?;
+    }
     let (c, answered) =
         thresholds::restitution::collision(&setup.contact, &law, t_vis, args.v_in, &opts, method)?;
-    if let (Some(path), Some(file)) = (&args.trajectory, file) {
+    if let Some(path) = &args.trajectory {
+        let file = std::fs::File::create(path).map_err(|e| cannot_write(path, e))?;
         write_trajectory(file, &setup, &c).map_err(|e| {
             CliError::Usage(format!(
                 "--trajectory {}: cannot write the file: {e}",
@@ -131,6 +134,20 @@ pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
     );
     r.input(setup.input);
     Ok(r)
+}
+
+/// Whether `path` can be written, without changing it: opened for appending (created if it does
+/// not exist, and then removed again).
+fn writable(path: &std::path::Path) -> std::io::Result<()> {
+    let existed = path.exists();
+    std::fs::OpenOptions::new()
+        .append(true)
+        .create(true)
+        .open(path)?;
+    if !existed {
+        std::fs::remove_file(path)?;
+    }
+    Ok(())
 }
 
 fn write_trajectory(
