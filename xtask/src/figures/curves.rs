@@ -3,7 +3,7 @@
 
 use super::chart::*;
 use super::Error;
-use crate::table::Cell;
+use crate::table::{Cell, Table};
 use numerics::format::number;
 use plotters::prelude::*;
 use std::path::Path;
@@ -53,15 +53,69 @@ impl ThresholdCurve {
     }
 }
 
-/// V_stick against T_vis: one line per curve, the experiment (a band for its uncertainty) and
-/// the JKR stars.
+/// The CSV of a family of curves (Figures 4 and 5, the wall figure): the `comments`, then the
+/// units line, and one row per curve and T_vis ([`ThresholdCurve::rows`]) under the columns
+/// `parameter.0` (each curve's label), t_vis, v_stick, v_double_onset, v_stick_jkr and, when
+/// `with_limit`, no_bouncing_below. `parameter.1` is the label's entry in the units line
+/// (`None` for a label without one).
+pub fn curves_table<'a>(
+    file: &str,
+    mut comments: Vec<String>,
+    parameter: (&str, Option<&str>),
+    curves: impl IntoIterator<Item = (Cell, &'a ThresholdCurve)>,
+    with_limit: bool,
+) -> Table {
+    let limit = if with_limit {
+        ", no_bouncing_below"
+    } else {
+        ""
+    };
+    let label = parameter.1.map_or(String::new(), |u| format!("{u}, "));
+    comments.push(format!(
+        "units: {label}t_vis [s], v_stick, v_double_onset, v_stick_jkr{limit} [m/s]"
+    ));
+    let mut columns = vec![
+        parameter.0,
+        "t_vis",
+        "v_stick",
+        "v_double_onset",
+        "v_stick_jkr",
+    ];
+    if with_limit {
+        columns.push("no_bouncing_below");
+    }
+    let mut t = Table::new(file, comments, &columns);
+    for (label, c) in curves {
+        t.rows.extend(c.rows(label, with_limit));
+    }
+    t
+}
+
+/// Each curve with its legend label, `name = parameter` followed by `unit` (e.g. `" J/m^2"`).
+pub fn labelled<'a>(
+    curves: &'a [ThresholdCurve],
+    name: &str,
+    unit: &str,
+) -> Vec<(String, &'a ThresholdCurve)> {
+    let label = |c: &ThresholdCurve| format!("{name} = {}{unit}", number(c.parameter));
+    curves.iter().map(|c| (label(c), c)).collect()
+}
+
+/// V_stick against T_vis over the span of the curves' T_vis: one line per curve, the
+/// experiment (a band for its uncertainty) and the JKR stars.
 pub fn v_stick_chart(
     path: &Path,
     caption: &str,
     curves: &[(String, &ThresholdCurve)],
-    (x0, x1): (f64, f64),
     experiment: &Measurement,
 ) -> Result<(), Error> {
+    let t_vis = || {
+        curves
+            .iter()
+            .flat_map(|(_, c)| c.points.iter().map(|p| p.t_vis))
+    };
+    let x0 = t_vis().fold(f64::INFINITY, f64::min);
+    let x1 = t_vis().fold(f64::NEG_INFINITY, f64::max);
     let line_at = experiment.v_stick;
     let err = experiment.v_stick_err;
     let band = (err > 0.0).then_some((line_at - err, line_at + err));

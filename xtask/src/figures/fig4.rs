@@ -1,8 +1,8 @@
 //! Figure 4: V_stick against T_vis for several k, CO2 grains of 60 um, with the experiment of
 //! Musiolik et al. (2016a) (Section 5.1).
 
-use super::curves::{v_stick_chart, ThresholdCurve};
-use super::{co2_contact, figure_table, geomspace, par_map, Error, Progress, Resolution, KS};
+use super::curves::{curves_table, labelled, v_stick_chart, ThresholdCurve};
+use super::{co2_contact, figure_comments, geomspace, par_map, Error, Progress, Resolution, KS};
 use crate::table::Table;
 use contact::Material;
 use greenwood::CrackLaw;
@@ -38,20 +38,14 @@ impl Figure4 {
     pub fn to_tables(&self) -> Vec<Table> {
         let e = MUSIOLIK_2016A;
         let (r, v, dv) = (number(e.radius), number(e.v_stick), number(e.v_stick_err));
-        let mut t = figure_table(
-            "fig4.csv",
+        let comments = figure_comments(
             "Figure 4: threshold velocity for sticking V_stick against T_vis for several k (Section 5.1)",
             ("co2", &Material::co2()),
-            &[
-                format!("radius = {r} m; experiment (Musiolik et al. 2016a): V_stick = {v} +- {dv} m/s"),
-                "units: k dimensionless, t_vis [s], v_stick, v_double_onset, v_stick_jkr [m/s]".into(),
-            ],
-            &["k", "t_vis", "v_stick", "v_double_onset", "v_stick_jkr"],
+            &[format!("radius = {r} m; experiment (Musiolik et al. 2016a): V_stick = {v} +- {dv} m/s")],
         );
-        for c in &self.curves {
-            t.rows.extend(c.rows(c.parameter.into(), false));
-        }
-        vec![t]
+        let curves = self.curves.iter().map(|c| (c.parameter.into(), c));
+        let parameter = ("k", Some("k dimensionless"));
+        vec![curves_table("fig4.csv", comments, parameter, curves, false)]
     }
 }
 
@@ -59,17 +53,7 @@ impl Figure4 {
     /// `fig4.svg`: V_stick against T_vis for each k, with the CO2 experiment.
     pub fn draw(&self, path: &Path) -> Result<(), Error> {
         let e = MUSIOLIK_2016A;
-        let curves: Vec<_> = self
-            .curves
-            .iter()
-            .map(|c| (format!("k = {}", number(c.parameter)), c))
-            .collect();
-        v_stick_chart(
-            path,
-            "Figure 4: CO2, R1 = 60 um",
-            &curves,
-            (1e-12, 1e-8),
-            &e,
-        )
+        let caption = "Figure 4: CO2, R1 = 60 um";
+        v_stick_chart(path, caption, &labelled(&self.curves, "k", ""), &e)
     }
 }

@@ -1,9 +1,9 @@
 //! Figure 5: V_stick against T_vis for H2O grains of 90 um and several gamma_SV, with the
 //! experiment of Musiolik et al. (2016b) (Section 5.2).
 
-use super::curves::{v_stick_chart, ThresholdCurve};
+use super::curves::{curves_table, labelled, v_stick_chart, ThresholdCurve};
 use super::{
-    figure_table, geomspace, h2o_with, par_map, Error, Progress, Resolution, GAMMAS_H2O, K,
+    figure_comments, geomspace, h2o_with, par_map, Error, Progress, Resolution, GAMMAS_H2O, K,
 };
 use crate::table::Table;
 use contact::{Contact, Geometry, Material};
@@ -41,38 +41,25 @@ impl Figure5 {
     pub fn to_tables(&self) -> Vec<Table> {
         let e = MUSIOLIK_2016B;
         let (r, k, v) = (number(e.radius), number(K), number(e.v_stick));
-        let mut t = figure_table(
-            "fig5.csv",
+        let comments = figure_comments(
             "Figure 5: V_stick against T_vis for H2O grains and several gamma_sv (Section 5.2)",
             ("h2o (gamma_sv varied)", &Material::h2o()),
             &[
                 format!("radius = {r} m, k = {k}; experiment (Musiolik et al. 2016b): V_stick ~ {v} m/s"),
                 "v_stick is empty where no collision bounces up to no_bouncing_below (the curve ends)".into(),
-                "units: gamma_sv [J/m^2], t_vis [s], v_stick, v_double_onset, v_stick_jkr, no_bouncing_below [m/s]".into(),
             ],
-            &["gamma_sv", "t_vis", "v_stick", "v_double_onset", "v_stick_jkr", "no_bouncing_below"],
         );
-        for c in &self.curves {
-            t.rows.extend(c.rows(c.parameter.into(), true));
-        }
-        vec![t]
+        let curves = self.curves.iter().map(|c| (c.parameter.into(), c));
+        let parameter = ("gamma_sv", Some("gamma_sv [J/m^2]"));
+        vec![curves_table("fig5.csv", comments, parameter, curves, true)]
     }
 }
 
 impl Figure5 {
     /// `fig5.svg`: V_stick against T_vis for each gamma_SV, with the H2O experiment.
     pub fn draw(&self, path: &Path) -> Result<(), Error> {
-        let curves: Vec<_> = self
-            .curves
-            .iter()
-            .map(|c| (format!("gamma_SV = {} J/m^2", number(c.parameter)), c))
-            .collect();
-        v_stick_chart(
-            path,
-            "Figure 5: H2O, R1 = 90 um (x: no bouncing beyond)",
-            &curves,
-            (1e-12, 1e-7),
-            &MUSIOLIK_2016B,
-        )
+        let caption = "Figure 5: H2O, R1 = 90 um (x: no bouncing beyond)";
+        let curves = labelled(&self.curves, "gamma_SV", " J/m^2");
+        v_stick_chart(path, caption, &curves, &MUSIOLIK_2016B)
     }
 }

@@ -109,17 +109,26 @@ pub(crate) fn material_line(name: &str, m: &Material) -> String {
     )
 }
 
-/// A figure's table: the comment lines `title`, the material's line and `notes`, then `columns`.
-pub(crate) fn figure_table(
-    file: &str,
+/// A figure's comment lines: `title`, the material's line, then `notes`.
+pub(crate) fn figure_comments(
     title: &str,
     (name, material): (&str, &Material),
     notes: &[String],
-    columns: &[&str],
-) -> Table {
+) -> Vec<String> {
     let mut comments = vec![title.to_string(), material_line(name, material)];
     comments.extend_from_slice(notes);
-    Table::new(file, comments, columns)
+    comments
+}
+
+/// A figure's table: its comment lines ([`figure_comments`]), then `columns`.
+pub(crate) fn figure_table(
+    file: &str,
+    title: &str,
+    material: (&str, &Material),
+    notes: &[String],
+    columns: &[&str],
+) -> Table {
+    Table::new(file, figure_comments(title, material, notes), columns)
 }
 
 /// Two identical CO2 spheres of radius `r1` (m).

@@ -1,9 +1,9 @@
 //! The sphere-on-wall figure: V_stick against T_vis for CO2 grains of 60 um, two identical
 //! spheres against a sphere on a CO2 wall (the laboratory geometry of Musiolik et al. 2016a).
 
-use super::curves::{v_stick_chart, ThresholdCurve};
-use super::{geomspace, material_line, par_map, Error, Progress, Resolution, K};
-use crate::table::Table;
+use super::curves::{curves_table, v_stick_chart, ThresholdCurve};
+use super::{figure_comments, geomspace, par_map, Error, Progress, Resolution, K};
+use crate::table::{Cell, Table};
 use contact::{Contact, Geometry, Material};
 use greenwood::CrackLaw;
 use numerics::format::number;
@@ -49,17 +49,13 @@ impl FigureWall {
     /// `fig_wall.csv`.
     pub fn to_tables(&self) -> Vec<Table> {
         let e = MUSIOLIK_2016A;
-        let mut comments = vec![
-            "Sphere on a wall: V_stick against T_vis, two identical spheres against a sphere on a flat wall of the same material".into(),
-            material_line("co2", &Material::co2()),
-            format!(
-                "radius = {} m, k = {}; identical: R = R1/2, m* = m1/2; wall: R = R1, m* = m1",
-                number(e.radius),
-                number(K)
-            ),
-        ];
+        let mut notes = vec![format!(
+            "radius = {} m, k = {}; identical: R = R1/2, m* = m1/2; wall: R = R1, m* = m1",
+            number(e.radius),
+            number(K)
+        )];
         for (name, f) in WALL_GEOMETRIES.iter().zip(&self.fits) {
-            comments.push(format!(
+            notes.push(format!(
                 "{name}: T_vis for V_stick = {} +- {} m/s (Musiolik et al. 2016a): {} s ({} .. {} s)",
                 number(e.v_stick),
                 number(e.v_stick_err),
@@ -68,22 +64,23 @@ impl FigureWall {
                 number(f.t_vis_max)
             ));
         }
-        comments.push("units: t_vis [s], v_stick, v_double_onset, v_stick_jkr [m/s]".into());
-        let mut t = Table::new(
+        let comments = figure_comments(
+            "Sphere on a wall: V_stick against T_vis, two identical spheres against a sphere on a flat wall of the same material",
+            ("co2", &Material::co2()),
+            &notes,
+        );
+        let curves = WALL_GEOMETRIES
+            .iter()
+            .map(|n| Cell::from(*n))
+            .zip(&self.curves);
+        let parameter = ("geometry", None);
+        vec![curves_table(
             "fig_wall.csv",
             comments,
-            &[
-                "geometry",
-                "t_vis",
-                "v_stick",
-                "v_double_onset",
-                "v_stick_jkr",
-            ],
-        );
-        for (name, c) in WALL_GEOMETRIES.iter().zip(&self.curves) {
-            t.rows.extend(c.rows((*name).into(), false));
-        }
-        vec![t]
+            parameter,
+            curves,
+            false,
+        )]
     }
 }
 
@@ -103,12 +100,7 @@ impl FigureWall {
                 (label.to_string(), c)
             })
             .collect();
-        v_stick_chart(
-            path,
-            "Sphere on a wall: CO2, R1 = 60 um, k = 0.01",
-            &curves,
-            (1e-12, 1e-8),
-            &e,
-        )
+        let caption = "Sphere on a wall: CO2, R1 = 60 um, k = 0.01";
+        v_stick_chart(path, caption, &curves, &e)
     }
 }
