@@ -15,7 +15,7 @@ fn features(selection: &[&str], edges: &str) -> BTreeMap<String, String> {
     let out = Command::new(cargo)
         .args([
             "tree",
-            "--offline",
+            "--locked",
             "--prefix",
             "none",
             "-f",
