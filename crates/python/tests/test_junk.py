@@ -111,3 +111,23 @@ def test_junk_gives_clear_errors(name):
             pass
 
     one()
+
+
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        # numbers drawn from arrays are shown as Python shows them, not as np.float64(...)
+        (lambda: st.SizeDistribution([1e-5, -2e-5], [1, 1]), "samples[1] = -2e-05: must be > 0"),
+        (lambda: st.infer(CO2, 60e-6, sticking=([0.01, -0.02], [1, 0])), "v_in[1] = -0.02: must"),
+        (lambda: st.infer(CO2, 60e-6, restitution=([0.05], [1.5], [0.01])), "e[0] = 1.5: must"),
+        # empty outcomes are named as such, not as outcomes that are no booleans
+        (lambda: st.infer(CO2, 60e-6, sticking=([], [])), "non-empty"),
+        # the size law's argument by the name the function gives it
+        (lambda: st.t_vis_law("xx", 1e-6), "law = 'xx': must be 'co2' or 'h2o'"),
+        (lambda: st.v_stick(CO2, 60e-6, t_vis_law="xx"), "t_vis_law = 'xx': must be"),
+    ],
+)
+def test_messages_name_the_argument_and_show_plain_numbers(call, message):
+    with pytest.raises(ValueError) as e:
+        call()
+    assert message in str(e.value) and "np." not in str(e.value)

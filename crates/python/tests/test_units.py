@@ -45,3 +45,10 @@ def test_materials_take_quantities():
 def test_wrong_dimensions_name_the_argument(call, argument, unit):
     with pytest.raises((ValueError, TypeError), match=argument):
         call()
+
+
+def test_dimensionless_quantities_are_plain_numbers():
+    # k is a ratio of moduli: a dimensionless Quantity is its plain number (1 percent is 0.01)
+    plain = st.v_stick(CO2, 60e-6, 1e-9, k=0.01).v_stick
+    assert st.v_stick(CO2, 60e-6, 1e-9, k=0.01 * u.dimensionless_unscaled).v_stick == plain
+    assert st.v_stick(CO2, 60e-6, 1e-9, k=1 * u.percent).v_stick == plain

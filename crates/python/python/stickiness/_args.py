@@ -58,6 +58,14 @@ class StickinessWarning(UserWarning):
     """
 
 
+
+def shown(value: Any) -> str:
+    """``value`` as an error message shows it: a numpy scalar as the Python number it holds
+    (``-2e-05``, not ``np.float64(-2e-05)``), anything else as its ``repr``."""
+    if isinstance(value, np.generic):
+        value = value.item()
+    return repr(value)
+
 def _is_quantity(value: Any) -> bool:
     """Whether ``value`` is an ``astropy.units.Quantity`` (without importing astropy)."""
     units = sys.modules.get("astropy.units")
@@ -65,14 +73,20 @@ def _is_quantity(value: Any) -> bool:
 
 
 def si(name: str, value: Any) -> Any:
-    """``value`` in SI units: a Quantity is converted to the unit of ``name`` (``UNITS``); a
+    """``value`` in SI units: a Quantity is converted to the unit of ``name`` (``UNITS``), or
+    to a plain number where ``name`` is dimensionless (``k``: ``1 * u.percent`` is 0.01); a
     wrong dimension raises ``ValueError`` naming the argument and the expected unit. Other
     values are returned as they are."""
     if not _is_quantity(value):
         return value
     unit = UNITS.get(name)
     if unit is None:
-        raise TypeError(f"{name}: expected a plain number (dimensionless), got a quantity in {value.unit}")
+        try:
+            return value.to_value("")
+        except Exception:  # astropy.units.UnitConversionError
+            raise ValueError(
+                f"{name}: expected a dimensionless number, got a quantity in {value.unit}"
+            ) from None
     try:
         return value.to_value(unit)
     except Exception:  # astropy.units.UnitConversionError (and unit parsing errors)
@@ -193,9 +207,7 @@ def law_name(name: str, value: Any, required: bool = False) -> Optional[str]:
     """``None`` (unless ``required``) or a size law's name (``'co2'``, ``'h2o'``)."""
     if value is None and not required:
         return None
-    if not isinstance(value, str):
-        raise TypeError(f"{name}: expected 'co2' or 'h2o', got {type(value).__name__}")
-    return value
+    return choice(name, value, ("co2", "h2o"))
 
 
 def t_vis(value: Any, law: Optional[str], radius: Any, default: Optional[float]) -> Any:

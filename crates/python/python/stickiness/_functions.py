@@ -93,7 +93,7 @@ def collide(
     t = _args.t_vis(t_vis, t_vis_law, radius, None)
     t_end = _args.scalar_option("t_end", t_end)
     if t_end is not None and not (math.isfinite(t_end) and t_end >= 0):
-        raise ValueError(f"t_end = {t_end!r}: must be >= 0 and finite (s)")
+        raise ValueError(f"t_end = {_args.shown(t_end)}: must be >= 0 and finite (s)")
     b = Broadcast(radius=radius, radius2=radius2, t_vis=t, v_in=v_in, k=k)
     if trajectory and not b.scalar:
         raise ValueError("trajectory=True records one collision: give scalar arguments")

@@ -88,7 +88,7 @@ def _count(name: str, value: Any, least: int, most: Optional[int] = None) -> int
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < least \
             or (most is not None and value > most):
         within = f">= {least}" if most is None else f"within {least} .. {most}"
-        raise ValueError(f"{name} = {value!r}: must be an integer {within}")
+        raise ValueError(f"{name} = {_args.shown(value)}: must be an integer {within}")
     return int(value)
 
 
@@ -97,7 +97,7 @@ def _sizes(radius: Any) -> SizeDistribution:
         return radius
     r = _args.scalar("radius", _args.si("radius", radius))
     if not (math.isfinite(r) and r > 0):
-        raise ValueError(f"radius = {r!r}: must be > 0 and finite (m), or a SizeDistribution")
+        raise ValueError(f"radius = {_args.shown(r)}: must be > 0 and finite (m), or a SizeDistribution")
     return SizeDistribution([r])
 
 
@@ -319,13 +319,13 @@ def infer(
     wall = _args.geometry(radius2, wall)
     radius2 = _args.scalar_option("radius2", _args.si("radius2", radius2))
     if radius2 is not None and not (math.isfinite(radius2) and radius2 > 0):
-        raise ValueError(f"radius2 = {radius2!r}: must be > 0 and finite (m)")
+        raise ValueError(f"radius2 = {_args.shown(radius2)}: must be > 0 and finite (m)")
     k = _args.scalar("k", k)
     method = _args.method(method)
     rel_tol = _args.scalar("rel_tol", rel_tol)
     quantile = _args.scalar("v_stick_quantile", v_stick_quantile)
     if not 0.0 <= quantile <= 1.0:
-        raise ValueError(f"v_stick_quantile = {quantile!r}: must be within 0 .. 1")
+        raise ValueError(f"v_stick_quantile = {_args.shown(quantile)}: must be within 0 .. 1")
     free = _free(free)
     bounds = _priors(free, priors, material)
     fixed: Dict[str, float] = {}
@@ -334,7 +334,7 @@ def infer(
             raise ValueError("t_vis: give its value (s) when it is not free")
         fixed["t_vis"] = _args.scalar("t_vis", _args.si("t_vis", t_vis))
         if not (math.isfinite(fixed["t_vis"]) and fixed["t_vis"] > 0):
-            raise ValueError(f"t_vis = {fixed['t_vis']!r}: must be > 0 and finite (s)")
+            raise ValueError(f"t_vis = {_args.shown(fixed['t_vis'])}: must be > 0 and finite (s)")
     elif t_vis is not None:
         raise ValueError("t_vis: a fixed value and free=('t_vis', ...) exclude each other")
     if "gamma_sv" not in free:

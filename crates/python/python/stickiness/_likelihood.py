@@ -63,7 +63,7 @@ def _pair(name: str, value: Any, n: int) -> Tuple[np.ndarray, ...]:
 def _check(name: str, what: str, values: np.ndarray, ok: np.ndarray, rule: str) -> None:
     if not np.all(ok):
         i = int(np.argmin(ok))
-        raise ValueError(f"{name}: {what}[{i}] = {values[i]!r}: must be {rule}")
+        raise ValueError(f"{name}: {what}[{i}] = {_args.shown(values[i])}: must be {rule}")
 
 
 @dataclass(frozen=True)
@@ -88,9 +88,9 @@ class Data:
             value = _args.scalar("v_stick", _args.si("v_stick", v_stick[0]))
             sigma = _args.scalar("v_stick", _args.si("v_stick", v_stick[1]))
             if not (math.isfinite(value) and value > 0):
-                raise ValueError(f"v_stick: value = {value!r}: must be > 0 and finite (m/s)")
+                raise ValueError(f"v_stick: value = {_args.shown(value)}: must be > 0 and finite (m/s)")
             if not (math.isfinite(sigma) and sigma > 0):
-                raise ValueError(f"v_stick: sigma = {sigma!r}: must be > 0 and finite (m/s)")
+                raise ValueError(f"v_stick: sigma = {_args.shown(sigma)}: must be > 0 and finite (m/s)")
             threshold = (value, sigma)
         outcomes = None
         if sticking is not None:
@@ -98,7 +98,9 @@ class Data:
                 raise ValueError("sticking: expected (v_in, stuck): speeds (m/s) and booleans")
             v = np.atleast_1d(_args.float_array("sticking", _args.si("v_in", sticking[0])))
             stuck = np.atleast_1d(np.asarray(sticking[1]))
-            if stuck.dtype.kind not in "biu" or not np.all((stuck == 0) | (stuck == 1)):
+            # empty arrays (float64 by default) are named as such by the shape check below
+            kind_ok = stuck.size == 0 or stuck.dtype.kind in "biu"
+            if not kind_ok or not np.all((stuck == 0) | (stuck == 1)):
                 raise ValueError("sticking: stuck must be booleans (or 0/1)")
             if v.ndim != 1 or v.shape != stuck.shape or v.size == 0:
                 raise ValueError(
@@ -145,7 +147,7 @@ def priors(free: Sequence[str], given: Any, material: Material) -> Dict[str, Tup
         hi = _args.scalar(f"priors[{name!r}]", _args.si(name, bounds[1]))
         if not (math.isfinite(lo) and math.isfinite(hi) and 0 < lo < hi):
             raise ValueError(
-                f"priors: {name} = ({lo!r}, {hi!r}): must be 0 < lo < hi, finite "
+                f"priors: {name} = ({_args.shown(lo)}, {_args.shown(hi)}): must be 0 < lo < hi, finite "
                 f"({PARAMETERS[name]}; log-uniform bounds)"
             )
         out[name] = (lo, hi)

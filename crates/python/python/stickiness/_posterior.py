@@ -142,7 +142,7 @@ class Posterior:
             raise ValueError(f"name = {name!r}: must be a free parameter, one of {self.free}")
         level = _args.scalar("level", level)
         if not 0.0 < level < 1.0:
-            raise ValueError(f"level = {level!r}: must be within 0 < level < 1")
+            raise ValueError(f"level = {_args.shown(level)}: must be within 0 < level < 1")
         x = self.samples[name].to_numpy()
         lo, hi = np.quantile(x, [(1 - level) / 2, (1 + level) / 2])
         return float(lo), float(hi)
@@ -178,10 +178,10 @@ class Posterior:
         (samples, radii)."""
         r = _args.float_array("monomer_radius", monomer_radius)
         if not np.all(np.isfinite(r) & (r > 0)):
-            raise ValueError(f"monomer_radius = {monomer_radius!r}: must be > 0 and finite (m)")
+            raise ValueError(f"monomer_radius = {_args.shown(monomer_radius)}: must be > 0 and finite (m)")
         exponent = _args.scalar("exponent", exponent)
         if not np.isfinite(exponent):
-            raise ValueError(f"exponent = {exponent!r}: must be finite")
+            raise ValueError(f"exponent = {_args.shown(exponent)}: must be finite")
         t = self._parameter("t_vis")
         scale = (r / self.reference_radius) ** exponent
         return t[:, None] * np.atleast_1d(scale)[None, :] if r.ndim else t * float(scale)
@@ -223,10 +223,10 @@ class Posterior:
 
         qs = [float(q) for q in np.atleast_1d(_args.float_array("quantiles", quantiles))]
         if not all(0.0 <= q <= 1.0 for q in qs):
-            raise ValueError(f"quantiles = {quantiles!r}: must be within 0 .. 1")
+            raise ValueError(f"quantiles = {_args.shown(quantiles)}: must be within 0 .. 1")
         if isinstance(max_samples, bool) or not isinstance(max_samples, (int, np.integer)) \
                 or max_samples < 1:
-            raise ValueError(f"max_samples = {max_samples!r}: must be an integer >= 1")
+            raise ValueError(f"max_samples = {_args.shown(max_samples)}: must be an integer >= 1")
         t = self.t_vis_at(monomer_radius, exponent=exponent)
         radii = np.atleast_1d(_args.float_array("monomer_radius", monomer_radius))
         t = t.reshape(len(self.samples), -1)

@@ -55,7 +55,7 @@ class SizeDistribution:
         bad = ~(np.isfinite(radii) & (radii > 0))
         if bad.any():
             i = int(np.argmax(bad))
-            raise ValueError(f"samples[{i}] = {radii[i]!r}: must be > 0 and finite (m)")
+            raise ValueError(f"samples[{i}] = {_args.shown(radii[i])}: must be > 0 and finite (m)")
         if weights is None:
             w = np.full(radii.size, 1.0 / radii.size)
         else:
@@ -105,12 +105,12 @@ class SizeDistribution:
         median = _args.scalar("median", median)
         width = _args.scalar("width", width)
         if not (math.isfinite(median) and median > 0):
-            raise ValueError(f"median = {median!r}: must be > 0 and finite (m)")
+            raise ValueError(f"median = {_args.shown(median)}: must be > 0 and finite (m)")
         if not (math.isfinite(width) and width > 0):
-            raise ValueError(f"width = {width!r}: must be > 0 and finite (sigma of ln R)")
+            raise ValueError(f"width = {_args.shown(width)}: must be > 0 and finite (sigma of ln R)")
         if isinstance(nodes, bool) or not isinstance(nodes, (int, np.integer)) \
                 or not 1 <= nodes <= MAX_NODES:
-            raise ValueError(f"nodes = {nodes!r}: must be an integer within 1 .. {MAX_NODES}")
+            raise ValueError(f"nodes = {_args.shown(nodes)}: must be an integer within 1 .. {MAX_NODES}")
         z = np.array([NormalDist().inv_cdf((i + 0.5) / nodes) for i in range(int(nodes))])
         with np.errstate(over="ignore", under="ignore"):
             radii = median * np.exp(width * z)
@@ -126,7 +126,7 @@ class SizeDistribution:
         the nodes' mid-weights, as :func:`numpy.percentile` does for equal weights)."""
         q = _args.scalar("q", q)
         if not 0.0 <= q <= 1.0:
-            raise ValueError(f"q = {q!r}: must be within 0 .. 1")
+            raise ValueError(f"q = {_args.shown(q)}: must be within 0 .. 1")
         return float(np.exp(weighted_quantile(np.log(self.radii), self.weights, q)))
 
     @property
