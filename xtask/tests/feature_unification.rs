@@ -14,14 +14,7 @@ fn features(selection: &[&str], edges: &str) -> BTreeMap<String, String> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let out = Command::new(cargo)
         .args([
-            "tree",
-            "--locked",
-            "--prefix",
-            "none",
-            "-f",
-            "{p}|{f}",
-            "-e",
-            edges,
+            "tree", "--locked", "--prefix", "none", "-f", "{p}|{f}", "-e", edges,
         ])
         .args(selection)
         .current_dir(xtask::workspace_root())

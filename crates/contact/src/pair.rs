@@ -31,6 +31,10 @@ pub const E_BREAK_COEFF: f64 = 1.54;
 /// Tabor parameter below which JKR theory is outside its validity (Section 2.2: it needs mu >> 1).
 pub const TABOR_MIN: f64 = 1.0;
 
+/// Grains of this radius (m) tell whether a contact's infinite units come from the material
+/// constants or from its radius (`Contact::new`): a micron, well inside [`PLAUSIBLE_RADIUS`].
+const UNITS_REFERENCE_RADIUS: f64 = 1e-6;
+
 /// Plausible grain radii R1 (m): 10 nm (below, the Tabor parameter of ices falls under 1) to
 /// 1 cm (beyond, "grains" are pebbles). Outside, a result comes with a warning, since a radius
 /// given in the wrong unit (60 for 60 um) is the likeliest slip.
@@ -169,28 +173,53 @@ impl Contact {
         geometry.validate()?;
         let contact = Self::with_units(material, geometry);
         // valid constants can still be too far out for f64 (a radius of 1e300 m has an
-        // infinite mass): refuse them here rather than let a search run on infinities, naming
-        // the radius at fault (R2 if R1 alone, as identical spheres, is fine)
+        // infinite mass): refuse them here rather than let a search run on infinities
         if !contact.units_finite() {
-            let alone = Self::with_units(material, Geometry::identical(geometry.r1()));
-            let (name, value) = match geometry.r2() {
-                Some(r2) if alone.units_finite() => ("radius2", r2),
-                _ => ("radius", geometry.r1()),
-            };
-            return Err(OutOfRange::new(
-                name,
-                value,
-                format!(
-                    "such that, with this material (gamma_sv = {} J/m^2, young = {} Pa, \
-                     density = {} kg/m^3), the mass and the JKR units of the contact are finite \
-                     and > 0",
-                    material.gamma_sv, material.young, material.density
-                ),
-                "m",
-            )
-            .into());
+            return Err(Self::units_out_of_range(material, geometry).into());
         }
         Ok(contact)
+    }
+
+    /// The constant at fault where a contact's units are not finite: a material constant when
+    /// grains of [`UNITS_REFERENCE_RADIUS`] of that material have no finite units either (the
+    /// first of gamma_sv, young and density that, set to CO2's, gives them finite units), else
+    /// the radius (R2 if R1 alone, as identical spheres, is fine).
+    fn units_out_of_range(material: Material, geometry: Geometry) -> OutOfRange {
+        let finite = |m: Material, g: Geometry| Self::with_units(m, g).units_finite();
+        let reference = Geometry::identical(UNITS_REFERENCE_RADIUS);
+        let (g, e, rho) = (material.gamma_sv, material.young, material.density);
+        let with = format!(
+            "with gamma_sv = {} J/m^2, young = {} Pa, density = {} kg/m^3",
+            number(g),
+            number(e),
+            number(rho)
+        );
+        let rule = format!("such that, {with}, the mass and the JKR units of a contact are finite");
+        if !finite(material, reference) {
+            let co2 = Material::co2();
+            let mut fixed = [material; 3];
+            fixed[0].gamma_sv = co2.gamma_sv;
+            fixed[1].young = co2.young;
+            fixed[2].density = co2.density;
+            let constants = [
+                ("gamma_sv", g, "J/m^2"),
+                ("young", e, "Pa"),
+                ("density", rho, "kg/m^3"),
+            ];
+            let at_fault = constants
+                .into_iter()
+                .zip(fixed)
+                .find(|c| finite(c.1, reference));
+            if let Some(((name, value, unit), _)) = at_fault {
+                return OutOfRange::new(name, value, rule, unit);
+            }
+        }
+        let alone = Self::with_units(material, Geometry::identical(geometry.r1()));
+        let (name, value) = match geometry.r2() {
+            Some(r2) if alone.units_finite() => ("radius2", r2),
+            _ => ("radius", geometry.r1()),
+        };
+        OutOfRange::new(name, value, rule, "m")
     }
 
     /// The contact with its units computed (epsilon = [`SURFACE_FORCE_RANGE`]; not validated).

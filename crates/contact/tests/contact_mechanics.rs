@@ -94,6 +94,57 @@ fn bad_inputs_name_the_field() {
     ));
 }
 
+/// Valid constants whose contact has no finite units in f64 (a mass or a JKR unit of 0 or
+/// infinity) are refused naming the constant at fault, in the shortest form of each number.
+#[test]
+fn constants_too_far_out_for_f64_name_the_one_at_fault() {
+    let field = |m: Material, g: Geometry| match Contact::new(m, g) {
+        Err(ContactError::OutOfRange(bad)) => (bad.field, bad.to_string()),
+        other => panic!("{other:?}"),
+    };
+    let co2 = Material::co2();
+    let grains = Geometry::identical(60e-6);
+    // 1e300 J/m^2 makes a_eq^3 overflow at any radius: the surface energy, not the radius
+    let (name, message) = field(
+        Material {
+            gamma_sv: 1e300,
+            ..co2
+        },
+        grains,
+    );
+    assert_eq!(name, "gamma_sv", "{message}");
+    assert!(
+        message.starts_with("gamma_sv = 1e+300: must be such that"),
+        "{message}"
+    );
+    assert!(message.len() < 300, "{message}");
+    assert_eq!(
+        field(
+            Material {
+                young: 1e300,
+                ..co2
+            },
+            grains
+        )
+        .0,
+        "young"
+    );
+    assert_eq!(
+        field(
+            Material {
+                density: 1e-300,
+                ..co2
+            },
+            grains
+        )
+        .0,
+        "density"
+    );
+    // a radius of 1e300 m has an infinite mass: the radius (R2 where R1 alone is fine)
+    assert_eq!(field(co2, Geometry::identical(1e300)).0, "radius");
+    assert_eq!(field(co2, Geometry::spheres(60e-6, 1e-300)).0, "radius2");
+}
+
 #[test]
 fn json_material_files() {
     let m = Material::from_json_str(
