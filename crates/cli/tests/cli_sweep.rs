@@ -189,7 +189,7 @@ fn kill_and_resume_gives_the_same_bytes() {
 
 /// --resume drops a torn last line and starts again a file whose header was cut short; an
 /// existing file needs --resume or --force; a file of another sweep is refused (its header cut
-/// short too); bad axes exit 2 naming the flag before any file is written.
+/// short too); bad axes (too many values too) exit 2 naming the flag before any file is written.
 #[test]
 fn file_contract() {
     let d = dir("contract");
@@ -251,6 +251,20 @@ fn file_contract() {
         (vec!["--material", "co2,co3", "--t-vis", "1e-9"], "co3"),
         (vec!["--t-vis", "1e-9:abc:3"], "--t-vis"),
         (vec!["--k", "0.01,1.5", "--t-vis", "1e-9"], "--k"),
+        // a typo in N (a billion radii: 8 GB for the axis alone) and a grid of 1e14 points
+        (
+            vec!["--radius", "1e-6:1e-4:1000000000", "--t-vis", "1e-9"],
+            "--radius",
+        ),
+        (
+            vec![
+                "--radius",
+                "1e-6:1e-4:10000000",
+                "--t-vis",
+                "1e-12:1e-8:10000000",
+            ],
+            "at most 1000000000 points",
+        ),
     ] {
         let fresh = d.join("never.csv");
         let (code, out_text, err) = sweep(&args, &fresh);

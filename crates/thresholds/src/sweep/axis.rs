@@ -16,6 +16,11 @@ pub struct AxisError {
     pub problem: String,
 }
 
+/// The most values a `START:STOP:N` range may have: 1e7 (80 MB for the axis alone; a sweep
+/// over it takes minutes even where the master tables answer every point), so that a typo
+/// such as `1e-6:1e-4:1000000000` is refused at once instead of exhausting the memory.
+pub const MAX_AXIS_VALUES: usize = 10_000_000;
+
 /// The values of an axis written as a comma list, or as `START:STOP:N` for N values evenly
 /// spaced in log from START to STOP, both ends included ([`geomspace`]). `axis` names it in
 /// errors. Only the form is checked here; the values' ranges are checked with the grid
@@ -50,8 +55,11 @@ pub fn parse_axis(axis: &str, spec: &str) -> Result<Vec<f64>, AxisError> {
     };
     let (start, stop) = (value(start)?, value(stop)?);
     let n: usize = match n.trim().parse() {
-        Ok(n) if n >= 1 => n,
-        _ => return Err(bad("N must be a whole number >= 1")),
+        Ok(n) if (1..=MAX_AXIS_VALUES).contains(&n) => n,
+        _ => {
+            let max = MAX_AXIS_VALUES;
+            return Err(bad(&format!("N must be a whole number from 1 to {max}")));
+        }
     };
     if !(start.is_finite() && stop.is_finite() && start > 0.0 && stop > 0.0) {
         return Err(bad(

@@ -80,6 +80,11 @@ pub struct Chunk {
     pub points: Vec<Point>,
 }
 
+/// The most points a grid may have: 1e9 (a CSV row is about 150 bytes, so 150 GB of output,
+/// and hours of work even where the master tables answer every point); a larger grid is
+/// refused before any work ([`Grid::validate`]) rather than exhausting the memory.
+pub const MAX_GRID_POINTS: usize = 1_000_000_000;
+
 fn check_axis(
     field: &'static str,
     values: &[f64],
@@ -145,6 +150,27 @@ impl Grid {
                 "at least one material",
                 "name",
             ));
+        }
+        // the axes' product before anything is made from it (their chunks, the points)
+        let lengths = [
+            ("material", self.materials.len()),
+            ("gamma_sv", self.n_gamma()),
+            ("radius", self.radius.len()),
+            ("radius2", self.n_radius2()),
+            ("t_vis", self.n_t_vis()),
+            ("k", self.k.len()),
+        ];
+        let total = lengths.iter().try_fold(1usize, |p, l| p.checked_mul(l.1));
+        if total.is_none_or(|n| n > MAX_GRID_POINTS) {
+            let (field, n) = lengths
+                .into_iter()
+                .max_by_key(|l| l.1)
+                .unwrap_or(("radius", 0));
+            let allowed = format!(
+                "such that the grid (the product of the axes' lengths) has at most \
+                 {MAX_GRID_POINTS} points"
+            );
+            return Err(OutOfRange::new(field, n as f64, allowed, "values"));
         }
         let positive = |v: f64| v.is_finite() && v > 0.0;
         if let Some(g) = &self.gamma_sv {

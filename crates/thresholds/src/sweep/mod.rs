@@ -22,8 +22,8 @@ pub mod grid;
 pub mod resume;
 pub mod row;
 
-pub use axis::{canonical, geomspace, parse_axis, AxisError};
-pub use grid::{Chunk, Grid, Laws, NamedMaterial, Partner, Point, TVisAxis};
+pub use axis::{canonical, geomspace, parse_axis, AxisError, MAX_AXIS_VALUES};
+pub use grid::{Chunk, Grid, Laws, NamedMaterial, Partner, Point, TVisAxis, MAX_GRID_POINTS};
 pub use resume::{
     check_rows, file_text, remaining, verify_rows, written_rows, BadRow, Remaining, VerifyError,
     Written,
