@@ -232,7 +232,8 @@ impl Setup {
 /// The crack-law parameter shared by every collision command.
 #[derive(Debug, Clone, Args)]
 pub struct KArgs {
-    /// Ratio of relaxed to instantaneous modulus k (dimensionless, 0 < k < 1).
+    /// Ratio of relaxed to instantaneous modulus k (dimensionless, 0 < k <= 0.9; tables for
+    /// 0.005-0.05).
     #[arg(long, default_value = "0.01", allow_hyphen_values = true)]
     pub k: f64,
 }

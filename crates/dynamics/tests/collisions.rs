@@ -378,6 +378,27 @@ fn trajectory_initial_and_final_states() {
     assert_eq!(last.delta_dot, r.v_out);
 }
 
+/// k above K_MAX = 0.9 is refused by name: there the window of beta a contact crosses,
+/// (1 + eps) k to (1 - eps)/k, has closed so far that V_stick fell below V_stick,JKR at
+/// k = 0.98 (the JKR limit is a lower bound of V_stick for every T_vis > 0, Section 5.1).
+#[test]
+fn k_above_the_closing_window_is_refused_by_name() {
+    for k in [0.95, 0.98, 0.99, 0.995] {
+        let err = Collider::new(co2_60um(), CrackLaw::new(k).unwrap(), 1e-9).unwrap_err();
+        assert!(
+            matches!(
+                err,
+                DynamicsError::OutOfRange(numerics::OutOfRange { field: "k", .. })
+            ),
+            "{err}"
+        );
+        assert!(err
+            .to_string()
+            .starts_with(&format!("k = {k}: must be 0 < k <= 0.9")));
+    }
+    assert!(Collider::new(co2_60um(), CrackLaw::new(dynamics::K_MAX).unwrap(), 1e-9).is_ok());
+}
+
 #[test]
 fn bad_inputs_are_typed_errors() {
     let law = law();

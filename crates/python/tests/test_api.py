@@ -71,6 +71,11 @@ def test_bad_values_name_the_argument_and_element():
         st.v_stick(CO2, radius=[60e-6, 30e-6], t_vis=[[1e-9, -1e-9]])
     with pytest.raises(ValueError, match=r"^k = 1\.5: must be 0 < k < 1"):
         st.v_stick(CO2, t_vis=1e-9, k=1.5)
+    # a collision needs k <= 0.9 (dynamics::K_MAX): the search refuses k = 0.95 by name
+    with pytest.raises(ValueError, match=r"^k = 0\.95: must be 0 < k <= 0\.9 for a collision"):
+        st.v_stick(CO2, t_vis=1e-9, k=0.95)
+    with pytest.raises(ValueError, match=r"^k = 0\.99: must be 0 < k <= 0\.9"):
+        st.collide(CO2, 60e-6, 1e-9, 0.001, k=0.99)
     with pytest.raises(ValueError, match=r"^beta\[2\] = 200\.0"):
         st.crack_speed(0.01, [0.5, 1.0, 200.0])
     with pytest.raises(ValueError, match=r"^v_in = 0\.0"):

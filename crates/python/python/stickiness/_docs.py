@@ -23,8 +23,9 @@ PARAMETERS: Dict[str, str] = {
         Viscoelastic relaxation time T_vis (s, >= 0; 0 is the JKR limit). Give it or
         ``t_vis_law``.""",
     "k": """k : float or array_like, optional
-        Ratio of the relaxed to the instantaneous modulus (dimensionless, 0 < k < 1). Default
-        0.01, the paper's fiducial value (Section 2.3).""",
+        Ratio of the relaxed to the instantaneous modulus (dimensionless, 0 < k <= 0.9: as
+        k -> 1 the window of beta a contact crosses closes). Default 0.01, the paper's fiducial
+        value (Section 2.3); the master tables cover 0.005-0.05.""",
     "radius2": """radius2 : float, array_like or Quantity, optional
         Radius R2 of the second sphere (m). Default None: two identical spheres.""",
     "wall": """wall : bool, optional

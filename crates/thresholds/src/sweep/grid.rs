@@ -141,7 +141,8 @@ impl Grid {
     }
 
     /// Checks every axis before any work: each non-empty, radii and T_vis finite and > 0
-    /// (T_vis >= 0), 0 < k < 1, gamma_SV > 0, and every material with its gamma_SV valid.
+    /// (T_vis >= 0), 0 < k <= 0.9 ([`dynamics::K_MAX`]), gamma_SV > 0, and every material with its
+    /// gamma_SV valid.
     pub fn validate(&self) -> Result<(), OutOfRange> {
         if self.materials.is_empty() {
             return Err(OutOfRange::new(
@@ -192,8 +193,8 @@ impl Grid {
         check_axis(
             "k",
             &self.k,
-            |v| v > 0.0 && v < 1.0,
-            "0 < k < 1",
+            |v| v > 0.0 && v <= dynamics::K_MAX,
+            dynamics::K_RANGE,
             "dimensionless",
         )?;
         for m in &self.materials {
