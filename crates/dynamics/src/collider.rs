@@ -77,7 +77,22 @@ impl Collider {
         }
         let scales = Scales::new(&contact);
         let params = scales.params(&contact, t_vis);
-        if !(params.lambda <= MAX_CRACK_SPEED_NUMBER && params.c_d.is_finite()) {
+        if !params.c_d.is_finite() {
+            // c_D grows as T_vis: T_vis too large for f64 (far beyond the no-bouncing cliff,
+            // where every collision sticks)
+            let per_second = scales.params(&contact, 1.0).c_d;
+            return Err(OutOfRange::new(
+                "t_vis",
+                t_vis,
+                format!(
+                    "small enough that the drag number c_D = {} x T_vis/(1 s) is finite",
+                    numerics::format::number(per_second)
+                ),
+                "s",
+            )
+            .into());
+        }
+        if params.lambda > MAX_CRACK_SPEED_NUMBER || params.lambda.is_nan() {
             // the smallest T_vis these grains can be integrated at (c_a ~ 1/T_vis)
             let t_min = t_vis * params.lambda / MAX_CRACK_SPEED_NUMBER;
             return Err(OutOfRange::new(

@@ -408,6 +408,13 @@ fn bad_inputs_are_typed_errors() {
         DynamicsError::OutOfRange(numerics::OutOfRange { field: "t_vis", .. })
     ));
     assert!(err.to_string().contains("JKR"));
+    // a T_vis whose drag number overflows is named as too large, not as too small
+    let err = Collider::new(co2_60um(), &law, 1e300).unwrap_err();
+    assert!(
+        err.to_string()
+            .starts_with("t_vis = 1e+300: must be small enough that the drag number c_D"),
+        "{err}"
+    );
     let col = Collider::new(co2_60um(), &law, 1e-9).unwrap();
     for v in [0.0, -1.0, f64::NAN, f64::INFINITY] {
         assert!(matches!(
