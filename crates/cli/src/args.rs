@@ -330,7 +330,8 @@ pub struct SearchArgs {
     /// Relative tolerance of the threshold brackets (dimensionless, 1e-15 < rel_tol < 0.5).
     #[arg(long, default_value = "1e-6", allow_hyphen_values = true)]
     pub rel_tol: f64,
-    /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; at most 10000.0).
+    /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; for fit-t-vis
+    /// twice each target, raised to this where higher; at most 10000.0).
     #[arg(long, allow_hyphen_values = true)]
     pub v_max: Option<f64>,
     #[command(flatten)]

@@ -291,6 +291,22 @@ pub fn fit_t_vis(
         )
         .into());
     }
+    // a given limit only raises the trials' own (twice their target): one below the highest
+    // target cannot be meant
+    let top = v_stick + v_stick_err;
+    if let Some(v_max) = opts.v_max.filter(|&v| v < top) {
+        return Err(OutOfRange::new(
+            "v_max",
+            v_max,
+            format!(
+                ">= {} m/s, the highest V_stick of the fit (V_stick + dV): each trial T_vis is \
+                 searched up to twice its target, or up to v_max where that is higher",
+                number(top)
+            ),
+            "m/s",
+        )
+        .into());
+    }
     let searched = Cell::new(opts.method == ThresholdMethod::Search);
     let t_vis = solve(contact, law, v_stick, opts, &searched)?;
     let (t_vis_min, t_vis_max) = if v_stick_err == 0.0 {

@@ -80,6 +80,31 @@ fn section_5_1_fit_co2() {
     assert!(fit.t_vis > fit.t_vis_min && fit.t_vis < fit.t_vis_max);
 }
 
+/// A search limit only raises the fit's trials' own (twice each target): a v_max below
+/// V_stick + dV is refused by name before any search, one above it leaves the fit as it is.
+#[test]
+fn a_fit_refuses_a_search_limit_below_its_targets() {
+    let limited = |v_max: f64| SearchOptions {
+        v_max: Some(v_max),
+        ..SearchOptions::exact()
+    };
+    let c = co2(60e-6);
+    for v_max in [0.01, 0.05] {
+        let err = fit_t_vis(&c, &law(), 0.04, 0.02, &limited(v_max)).unwrap_err();
+        assert!(
+            err.to_string()
+                .starts_with(&format!("v_max = {v_max}: must be >= 0.06 m/s")),
+            "{err}"
+        );
+    }
+    let fit = fit_t_vis(&c, &law(), 0.04, 0.02, &limited(0.06)).unwrap();
+    let plain = fit_t_vis(&c, &law(), 0.04, 0.02, &SearchOptions::exact()).unwrap();
+    assert_eq!(
+        (fit.t_vis, fit.t_vis_min, fit.t_vis_max),
+        (plain.t_vis, plain.t_vis_min, plain.t_vis_max)
+    );
+}
+
 /// Section 5.2 (Eq. T_vis_H2O): H2O, R1 = 90 um, measured V_stick = 0.73 m/s requires
 /// T_vis = 5.3e-9 s for gamma_SV = 0.19 J/m^2 and 2.37e-8 s for gamma_SV = 0.02 J/m^2 (to the
 /// printed digits).

@@ -36,7 +36,8 @@ PARAMETERS: Dict[str, str] = {
         (R1/1 um)^1.11, T_vis,H2O = 1e-10 s (R1/1.5 um)^1.11. Excludes ``t_vis``.""",
     "v_max": """v_max : float or Quantity, optional
         Highest impact speed searched for bouncing (m/s, at most 1e4). Default 1000
-        V_stick,JKR.""",
+        V_stick,JKR; for :func:`fit_t_vis` twice each trial's target, raised to ``v_max``
+        where that is higher (a ``v_max`` below V_stick + dV is an error).""",
     "rel_tol": """rel_tol : float, optional
         Relative width of the final brackets of the search (dimensionless). Default 1e-6.""",
     "method": """method : {'table', 'search'}, optional
