@@ -11,6 +11,7 @@ mod hyphen;
 mod not_a_number;
 mod output;
 mod progress;
+mod usage_line;
 
 use clap::{CommandFactory, Parser, Subcommand};
 use std::process::ExitCode;
@@ -69,17 +70,27 @@ fn main() -> ExitCode {
     let argv: Vec<std::ffi::OsString> = std::env::args_os().collect();
     let cli = match Cli::try_parse_from(&argv) {
         Ok(cli) => cli,
-        // a flag taken as the value of the option before it explains a failure better
         Err(e) => {
-            if let Some(flag) = hyphen::flag_as_value(&mut Cli::command(), &argv) {
-                flag.exit()
+            // a flag taken as the value of the option before it explains a failure better
+            let e = match hyphen::flag_as_value(&mut Cli::command(), &argv) {
+                Some(flag) => flag,
+                None => {
+                    // a value that is not a number, in one line as all other bad input
+                    if let Some(line) = not_a_number::message(&Cli::command(), &argv, &e) {
+                        eprintln!("error: {line}");
+                        return ExitCode::from(2);
+                    }
+                    e
+                }
+            };
+            // every other usage error in one line too; help and version as clap prints them
+            match usage_line::line(&e) {
+                Some(line) => {
+                    eprintln!("{line}");
+                    return ExitCode::from(2);
+                }
+                None => e.exit(),
             }
-            // a value that is not a number, in one line as all other bad input
-            if let Some(line) = not_a_number::message(&Cli::command(), &argv, &e) {
-                eprintln!("error: {line}");
-                return ExitCode::from(2);
-            }
-            e.exit()
         }
     };
     let result = match &cli.command {

@@ -101,13 +101,65 @@ fn a_value_that_is_not_a_number_is_named_in_one_line() {
         assert_eq!(code, 2, "{args:?}: {err}");
         assert!(out.is_empty(), "{args:?}: {out}");
         assert!(err.contains(expected), "{args:?}: {err}");
-        // clap's own message (with its usage) names a flag taken for a value
-        if !expected.contains("found the flag") {
-            assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
-        }
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
     }
     // refused while parsing: no file is made
     assert!(!out_file.exists());
+}
+
+/// Every other usage error is one line as well (exit 2): clap's message with the possible
+/// values, the missing flags or its tip appended, without the usage synopsis, which after a
+/// conflict showed a command line that had never been given.
+#[test]
+fn usage_errors_are_one_line() {
+    for (line, expected) in [
+        (
+            "v-stick --t-vis-law foo",
+            "'foo' for '--t-vis-law <T_VIS_LAW>' [possible values: co2, h2o]",
+        ),
+        (
+            "v-stick --t-vis 1e-9 --t-vis-law co2",
+            "'--t-vis <T_VIS>' cannot be used with",
+        ),
+        (
+            "v-stick --t-vis 1e-9 --wall --radius2 1e-5",
+            "'--wall' cannot be used with",
+        ),
+        (
+            "collide --t-vis 1e-9 --v-in 0.04 --method search",
+            "[possible values: ode, table]",
+        ),
+        (
+            "fit-t-vis",
+            "required arguments were not provided: --v-stick <V_STICK>",
+        ),
+        (
+            "sweep --t-vis 1e-9 --out x.csv --format xml",
+            "[possible values: csv, jsonl]",
+        ),
+        (
+            "v-stik",
+            "unrecognized subcommand 'v-stik'; tip: a similar subcommand exists",
+        ),
+        (
+            "v-stick --tvis 1e-9",
+            "unexpected argument '--tvis' found; tip:",
+        ),
+    ] {
+        let args: Vec<&str> = line.split_whitespace().collect();
+        let (code, out, err) = run(&args);
+        assert_eq!(code, 2, "{line}: {err}");
+        assert!(out.is_empty(), "{line}: {out}");
+        assert_eq!(err.trim().lines().count(), 1, "{line}: {err}");
+        assert!(
+            err.starts_with("error: ") && err.contains(expected),
+            "{line}: {err}"
+        );
+    }
+    // help and version are what was asked for: clap's own, on stdout
+    let (code, out, _) = run(&["v-stick", "--help"]);
+    assert_eq!(code, 0);
+    assert!(out.contains("Usage: stickiness v-stick"), "{out}");
 }
 
 /// The range of T_vis is each command's: `collide` needs T_vis > 0 (0 is no collision), the
