@@ -136,7 +136,11 @@ mod tests {
     fn malformed_axes_name_the_axis_and_the_problem() {
         let e = |s: &str| parse_axis("--k", s).unwrap_err().to_string();
         assert_eq!(e("0.01,x"), "--k = 0.01,x: 'x' is not a number");
-        assert_eq!(e("1:2:0"), "--k = 1:2:0: N must be a whole number >= 1");
+        assert_eq!(
+            e("1:2:0"),
+            "--k = 1:2:0: N must be a whole number from 1 to 10000000"
+        );
+        assert!(e("1:2:10000001").ends_with("from 1 to 10000000"));
         assert!(e("-1:2:3").contains("START and STOP > 0"));
     }
 }
