@@ -117,7 +117,8 @@ def test_wrong_types():
         st.collide(CO2, t_vis=1e-9)
     with pytest.raises(TypeError, match="t_vis"):
         st.v_stick(CO2)
-    with pytest.raises(ValueError, match="t_vis_law"):
+    # the argument by its name in the signature, t_vis_law(law, radius)
+    with pytest.raises(ValueError, match=r"^law = 'co3': must be 'co2' or 'h2o'"):
         st.t_vis_law("co3", 1e-6)
     # integers and lists of numbers are numbers (1 and 2 m earn a warning)
     with pytest.warns(st.StickinessWarning):
