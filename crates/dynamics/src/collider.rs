@@ -297,7 +297,8 @@ impl Collider {
             delta: p.delta,
             delta_dot: p.delta_dot,
             beta: model::beta(u[0], u[1]),
-            message: e.to_string(),
+            // diffsol writes tiny times in full decimals: the workspace's number form instead
+            message: numerics::format::shorten_numbers(&e.to_string()),
         }
     }
 

@@ -24,6 +24,44 @@ pub fn number(x: f64) -> String {
     }
 }
 
+/// Plain decimals longer than this many characters in another library's message are written
+/// again by [`shorten_numbers`]: `0.000123` stays, twenty zeros before the digits do not.
+const LONG_NUMBER: usize = 20;
+
+/// `text` (another library's message) with each plain decimal longer than 20 characters, as
+/// some libraries print tiny or huge values, in the form of [`number`]; the rest unchanged.
+///
+/// ```
+/// use numerics::format::shorten_numbers;
+/// assert_eq!(
+///     shorten_numbers("Step size is too small at time = 0.0000000000000000000001085628328344482"),
+///     "Step size is too small at time = 1.085628328344482e-22"
+/// );
+/// assert_eq!(shorten_numbers("t = 0.5, h = 1e-9"), "t = 0.5, h = 1e-9");
+/// ```
+pub fn shorten_numbers(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut run = String::new();
+    let flush = |run: &mut String, out: &mut String| {
+        let plain = !run.contains(['e', 'E']) && run.len() > LONG_NUMBER;
+        match run.parse::<f64>() {
+            Ok(x) if plain => out.push_str(&number(x)),
+            _ => out.push_str(run),
+        }
+        run.clear();
+    };
+    for c in text.chars() {
+        if c.is_ascii_digit() || c == '.' || (c == '-' && run.is_empty()) {
+            run.push(c);
+        } else {
+            flush(&mut run, &mut out);
+            out.push(c);
+        }
+    }
+    flush(&mut run, &mut out);
+    out
+}
+
 /// A length (m) in the unit that suits it (nm, um, mm, cm, m), for titles: `60 um`, `10 nm`.
 ///
 /// The scaled value is rounded to 12 significant figures before [`number`] prints it, so that
