@@ -61,6 +61,19 @@ def test_per_cell_radius_and_smooth_transitions():
         sd.vfrag_profile(T, monomer_radius=-1.0)
 
 
+def test_wrong_types_and_a_quantile_without_posteriors_are_named():
+    T = np.array([200.0, 100.0, 50.0])
+    with pytest.raises(TypeError, match=r"posteriors\['co2'\]: expected a stickiness.Posterior"):
+        sd.vfrag_profile(T, posteriors={"co2": 3})
+    with pytest.raises(TypeError, match="v_frag: expected a dict"):
+        sd.vfrag_profile(T, v_frag=700.0)
+    with pytest.raises(TypeError, match="sim: expected a dustpy.Simulation"):
+        sd.set_vfrag(object())
+    # a quantile of the posteriors' V_frag without posteriors would be ignored: refused
+    with pytest.raises(ValueError, match="quantile = 0.84: .* needs posteriors="):
+        sd.vfrag_profile(T, quantile=0.84)
+
+
 def test_importing_stickiness_needs_no_dustpy():
     code = "import sys; sys.modules['dustpy'] = None; import stickiness, stickiness.dustpy; print('ok')"
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)

@@ -87,3 +87,9 @@ def test_pickles_and_bad_axes():
         st.sweep(material=["co2", "co3"], t_vis=1e-9)
     with pytest.raises(TypeError, match="t_vis"):
         st.sweep()
+    # an axis is a list: a 2-d array is not flattened silently
+    with pytest.raises(ValueError, match=r"^radius: an axis is a value or a 1-d list"):
+        st.sweep(radius=np.ones((2, 2)) * 1e-5, t_vis=1e-9)
+    # a scheduler's address is no client
+    with pytest.raises(TypeError, match="client: expected a dask.distributed.Client"):
+        st.sweep(t_vis=1e-9, client="tcp://127.0.0.1:8786")

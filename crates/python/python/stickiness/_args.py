@@ -192,11 +192,11 @@ def keyed(
 ) -> Iterator[Tuple[str, Any]]:
     """The items of ``value``, a dict of the ``form`` (None: none) whose keys are among ``keys``;
     ``ValueError`` naming ``name`` for anything else (``unknown``, with ``{key}`` and ``{keys}``
-    filled in, for a key not among them)."""
+    filled in, for a key not among them), ``TypeError`` for what is no dict."""
     if value is None:
         return
     if not isinstance(value, dict):
-        raise ValueError(f"{name}: expected a dict {form}, got {type(value).__name__}")
+        raise TypeError(f"{name}: expected a dict {form}, got {type(value).__name__}")
     for key, item in value.items():
         if key not in keys:
             raise ValueError(f"{name}: " + unknown.format(key=key, keys=tuple(keys)))

@@ -46,6 +46,8 @@ from ._core import Material
 from ._functions import v_frag
 from ._posterior import Posterior
 
+__all__ = ["CM_PER_M", "T_CO2", "T_H2O", "VFragProfile", "set_vfrag", "vfrag_profile"]
+
 #: Temperature (K) above which the monomers are bare refractory grains: the H2O snow line,
 #: 150 K (the condensation temperature of water ice in protoplanetary discs; Lecar et al. 2006).
 T_H2O = 150.0
@@ -104,10 +106,15 @@ class VFragProfile:
         form, unknown = "{'co2' | 'h2o': Posterior}", "unknown ice {key!r}; allowed: {keys}"
         for ice, post in _args.keyed("posteriors", posteriors, form, tuple(_ICES), unknown):
             if not isinstance(post, Posterior):
-                raise ValueError(f"posteriors[{ice!r}]: expected a stickiness.Posterior, got {type(post).__name__}")
+                raise TypeError(f"posteriors[{ice!r}]: expected a stickiness.Posterior, got {type(post).__name__}")
         quantile = _args.scalar("quantile", quantile)
         if not 0.0 <= quantile <= 1.0:
             raise ValueError(f"quantile = {quantile!r}: must be within 0 .. 1")
+        if quantile != 0.5 and not posteriors:
+            raise ValueError(
+                f"quantile = {quantile!r}: the quantile of the posteriors' V_frag, so it needs "
+                "posteriors= (without them V_frag follows the Section 5.3 laws)"
+            )
         given: Dict[str, float] = {}
         form = "{'co2' | 'h2o': V_frag in m/s}"
         for ice, value in _args.keyed("v_frag", v_frag, form, tuple(_ICES), unknown):
@@ -278,7 +285,9 @@ def set_vfrag(
     The options are those of :func:`vfrag_profile` (``posteriors=`` and ``quantile=`` bracket
     the run by the uncertainty of inferred T_vis). Returns the :class:`VFragProfile` it uses.
     """
-    frag = getattr(getattr(getattr(sim, "dust", None), "v", None), "frag", None)
+    if not hasattr(sim, "dust") or not hasattr(sim, "gas"):
+        raise TypeError(f"sim: expected a dustpy.Simulation, got {type(sim).__name__}")
+    frag = getattr(getattr(sim.dust, "v", None), "frag", None)
     if frag is None:
         raise ValueError("sim.dust.v.frag does not exist yet: call sim.initialize() first")
     profile = VFragProfile(

@@ -30,7 +30,10 @@ COLUMNS: Tuple[str, ...] = tuple(_core.SWEEP_COLUMNS)
 
 
 def _axis(name: str, values: Any) -> Tuple[float, ...]:
-    a = _args.float_array(name, values).reshape(-1)
+    a = _args.float_array(name, values)
+    if a.ndim > 1:
+        raise ValueError(f"{name}: an axis is a value or a 1-d list of values, got shape {a.shape}")
+    a = a.reshape(-1)
     if a.size == 0:
         raise ValueError(f"{name}: an axis needs at least one value")
     return tuple(float(x) for x in a)
@@ -200,6 +203,11 @@ def sweep(
     if not isinstance(chunks_per_task, int) or isinstance(chunks_per_task, bool) or chunks_per_task < 1:
         raise ValueError(f"chunks_per_task = {chunks_per_task!r}: must be an integer >= 1")
     progress = _args.flag("progress", progress)
+    if client is not None and not callable(getattr(client, "map", None)):
+        raise TypeError(
+            f"client: expected a dask.distributed.Client, got {type(client).__name__} "
+            "(a scheduler address is Client('tcp://...'))"
+        )
     spec = SweepSpec(
         materials=_materials(material),
         gamma_sv=None if gamma_sv is None else _axis("gamma_sv", gamma_sv),
