@@ -262,7 +262,7 @@ def test_posteriors_bracket_the_disc():
     assert bands[0.16] <= bands[0.84]
     with pytest.raises(ValueError, match="posteriors"):
         sd.vfrag_profile(T, posteriors={"co": post})
-    with pytest.raises(ValueError, match="posteriors"):
+    with pytest.raises(TypeError, match="posteriors"):
         sd.vfrag_profile(T, posteriors={"co2": 1e-10})
     with pytest.raises(ValueError, match="quantile"):
         sd.vfrag_profile(T, posteriors={"co2": post}, quantile=1.5)
