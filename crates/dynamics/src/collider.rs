@@ -297,8 +297,10 @@ impl Collider {
             delta: p.delta,
             delta_dot: p.delta_dot,
             beta: model::beta(u[0], u[1]),
-            // diffsol writes tiny times in full decimals: the workspace's number form instead
-            message: numerics::format::shorten_numbers(&e.to_string()),
+            // diffsol writes tiny times in full decimals: the workspace's number form instead;
+            // its time is the pseudo-time of the integration, not the t in seconds above
+            message: numerics::format::shorten_numbers(&e.to_string())
+                .replace("at time = ", "at the solver's pseudo-time (dimensionless) = "),
         }
     }
 
