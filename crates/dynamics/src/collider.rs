@@ -299,8 +299,10 @@ impl Collider {
             beta: model::beta(u[0], u[1]),
             // diffsol writes tiny times in full decimals: the workspace's number form instead;
             // its time is the pseudo-time of the integration, not the t in seconds above
-            message: numerics::format::shorten_numbers(&e.to_string())
-                .replace("at time = ", "at the solver's pseudo-time (dimensionless) = "),
+            message: numerics::format::shorten_numbers(&e.to_string()).replace(
+                "at time = ",
+                "at the solver's pseudo-time (dimensionless) = ",
+            ),
         }
     }
 

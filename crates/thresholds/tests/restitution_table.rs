@@ -170,3 +170,36 @@ fn collisions_below_y_minus_4_5_agree_with_the_ode() {
         "the tables answered {answered} of {tried}"
     );
 }
+
+/// Beyond the no-bouncing cliff, where the master tables vouch that no collision bounces or
+/// double-collides below the search limit, every collision sticks (along V_in the outcomes come
+/// in the order sticking, double collision, bouncing): the tables answer "sticking" at once,
+/// as the ODE integrates it, at any speed below the limit (random grains of the domain, T_vis
+/// beyond the cliff of each).
+#[test]
+fn beyond_the_cliff_the_tables_answer_sticking_as_the_ode() {
+    let law = CrackLaw::new(0.01).unwrap();
+    let mut rng = Rng(2027);
+    let mut answered = 0;
+    for _ in 0..40 {
+        let r1 = rng.log_uniform(1e-7, 1e-3);
+        let contact = Contact::new(Material::co2(), Geometry::identical(r1)).unwrap();
+        // c_D from 10 to 1e4: far beyond the cliff (x_s below 2 for k = 0.01)
+        let c_d = rng.log_uniform(10.0, 1e4);
+        let t_vis = c_d / contact.dimensionless(1.0).c_d;
+        let th = sticking_thresholds(&contact, &law, t_vis, &SearchOptions::default()).unwrap();
+        assert_eq!(
+            (th.v_stick, th.v_double_onset),
+            (None, None),
+            "R1 = {r1} m, T_vis = {t_vis} s"
+        );
+        let v_in = contact.v_stick_jkr() * rng.log_uniform(0.1, 900.0);
+        let what = format!("R1 = {r1} m, T_vis = {t_vis} s, V_in = {v_in} m/s");
+        assert!(
+            table_agrees_with_the_ode(&contact, &law, t_vis, v_in, &what),
+            "{what}: not answered"
+        );
+        answered += 1;
+    }
+    assert_eq!(answered, 40);
+}

@@ -234,11 +234,16 @@ impl RestitutionTables {
         s: f64,
         masters: &MasterTables,
     ) -> Option<(Outcome, f64)> {
-        let r = masters.ratios_at(x, y, k, F_TOP * (1.0 - 1e-3))?;
-        let (f, f_on) = (r.v_stick?, r.v_double_onset?);
-        if s < f_on * (1.0 - ONSET_MARGIN) {
+        let f_max = F_TOP * (1.0 - 1e-3);
+        let r = masters.ratios_at(x, y, k, f_max)?;
+        // below the onset of double collisions every collision sticks (along V_in the outcomes
+        // come in the order sticking, double, bouncing), and where the master tables vouch
+        // that none double-collides below the limit (beyond the cliff), every one up to it
+        let onset = r.v_double_onset.unwrap_or(f_max);
+        if s < onset * (1.0 - ONSET_MARGIN) {
             return Some((Outcome::Sticking, 0.0));
         }
+        let (f, f_on) = (r.v_stick?, r.v_double_onset?);
         let (bouncing, coord) = channel_of(s, f, f_on)?;
         let side = if bouncing {
             Side::Bouncing
