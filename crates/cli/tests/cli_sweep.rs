@@ -278,6 +278,28 @@ fn file_contract() {
     }
 }
 
+/// --resume on a file of the other format names the format the file was written in.
+#[test]
+fn resuming_a_file_of_the_other_format_names_it() {
+    let d = dir("other-format");
+    let (csv, jsonl) = (d.join("s.csv"), d.join("s.jsonl"));
+    assert_eq!(sweep(&SMALL, &csv).0, 0);
+    assert_eq!(
+        sweep(&[&SMALL[..], &["--format", "jsonl"]].concat(), &jsonl).0,
+        0
+    );
+    let resume = [&SMALL[..], &["--resume"]].concat();
+    let (code, _, err) = sweep(&[&resume[..], &["--format", "jsonl"]].concat(), &csv);
+    assert_eq!(code, 2);
+    assert!(err.contains("in the other format (--format csv)"), "{err}");
+    let (code, _, err) = sweep(&resume, &jsonl);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("in the other format (--format jsonl)"),
+        "{err}"
+    );
+}
+
 /// Geometry and law axes fill their columns; JSON Lines carry the same values.
 #[test]
 fn columns_and_jsonl() {

@@ -12,6 +12,7 @@
 
 mod args;
 
+use args::Format;
 pub use args::SweepArgs;
 
 use crate::error::CliError;
@@ -53,10 +54,22 @@ fn existing_rows(args: &SweepArgs, path: &Path, header: &str) -> Result<Option<W
     };
     match written_rows(text, header) {
         Some(w) => Ok(Some(w)),
-        None => Err(CliError::Usage(format!(
-            "--resume: {} holds another sweep (its header differs from this command's); use another --out, or --force to overwrite it",
-            path.display()
-        ))),
+        None => {
+            // a file of the other format is named as such (its first byte tells: `#` or `{`)
+            let other = match (text.trim_start().chars().next(), args.format) {
+                (Some('{'), Format::Csv) => Some("jsonl"),
+                (Some('#'), Format::Jsonl) => Some("csv"),
+                _ => None,
+            };
+            let why = match other {
+                Some(f) => format!("holds a sweep in the other format (--format {f})"),
+                None => "holds another sweep (its header differs from this command's)".into(),
+            };
+            Err(CliError::Usage(format!(
+                "--resume: {} {why}; use another --out, or --force to overwrite it",
+                path.display()
+            )))
+        }
     }
 }
 
