@@ -62,7 +62,7 @@ impl BulkOverrides {
 /// A material after overrides, with the name it goes by in titles and in `"input"`.
 #[derive(Debug, Clone)]
 pub struct NamedMaterial {
-    /// As given: a preset name or the path of the file.
+    /// A preset's name (lower case, however it was typed) or the path of the file, as given.
     pub given: String,
     /// For titles: the preset name, or the file's stem, with the overridden constants named
     /// (`co2 (young, density overridden)`): a title must not call a material of other
@@ -141,7 +141,12 @@ impl Overrides {
             short = format!("{short} ({} overridden)", overridden.join(", "));
         }
         Ok(NamedMaterial {
-            given: name.to_string(),
+            // a preset under its one name (`CO2` is `co2`), so that scripts group by it; a
+            // file's path as given
+            given: match file {
+                Some(path) => path.to_string(),
+                None => name.to_ascii_lowercase(),
+            },
             short,
             material: m,
         })

@@ -44,6 +44,11 @@
 //! - [`paper`]: the measurements the paper compares with (Musiolik 2016a/b, Gundlach 2015).
 //! - [`sweep`]: grids of searches in chunks that keep their hints, their axes and their rows,
 //!   shared by the CLI and the Python package.
+//! - [`master`]: the master tables of V_stick/V_stick,JKR over (c_D, c_a, k) ([`MasterTables`]),
+//!   the default answer of [`sticking_thresholds`].
+//! - [`restitution`]: the restitution tables ([`RestitutionTables`]) and
+//!   [`restitution::collision`], one collision's outcome, e and V_out from the tables or else
+//!   the ODE.
 
 pub mod bytes;
 pub mod error;
@@ -57,10 +62,12 @@ pub mod stick;
 pub mod sweep;
 mod text;
 
-pub use contact::{Contact, ContactError, Geometry, Material, Warning, JKR_QUANTITIES, PRESETS};
+pub use contact::{
+    Contact, ContactError, Dimensionless, Geometry, Material, Warning, JKR_QUANTITIES, PRESETS,
+};
 pub use dynamics::{
-    Collider, Collision, DynamicsError, Method, Outcome, SolverOptions, StickingCriterion,
-    TrajectoryPoint,
+    Backend, Collider, Collision, DynamicsError, Method, Outcome, Rebound, SolverOptions,
+    StickingCriterion, TrajectoryPoint, K_MAX, K_RANGE,
 };
 pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, FitWarning, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
