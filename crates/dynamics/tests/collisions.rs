@@ -397,6 +397,13 @@ fn k_above_the_closing_window_is_refused_by_name() {
             .starts_with(&format!("k = {k}: must be 0 < k <= 0.9")));
     }
     assert!(Collider::new(co2_60um(), CrackLaw::new(dynamics::K_MAX).unwrap(), 1e-9).is_ok());
+    // the range the messages state is K_MAX's
+    let stated = format!("0 < k <= {}", dynamics::K_MAX);
+    assert!(
+        dynamics::K_RANGE.starts_with(&stated),
+        "{}",
+        dynamics::K_RANGE
+    );
 }
 
 #[test]

@@ -120,14 +120,25 @@ impl Grid {
         }
     }
 
-    /// Number of points.
+    /// Each axis by its input's name with its length, outermost first: the grid is their
+    /// product.
+    fn axis_lengths(&self) -> [(&'static str, usize); 6] {
+        [
+            ("material", self.materials.len()),
+            ("gamma_sv", self.n_gamma()),
+            ("radius", self.radius.len()),
+            ("radius2", self.n_radius2()),
+            ("t_vis", self.n_t_vis()),
+            ("k", self.k.len()),
+        ]
+    }
+
+    /// Number of points (`usize::MAX` where the product overflows: [`Grid::validate`] refuses
+    /// such a grid).
     pub fn len(&self) -> usize {
-        self.materials.len()
-            * self.n_gamma()
-            * self.radius.len()
-            * self.n_radius2()
-            * self.n_t_vis()
-            * self.k.len()
+        self.axis_lengths()
+            .iter()
+            .fold(1usize, |p, l| p.saturating_mul(l.1))
     }
 
     /// Number of chunks: one per combination of every axis but T_vis ([`Grid::chunks`]).
@@ -153,17 +164,9 @@ impl Grid {
             ));
         }
         // the axes' product before anything is made from it (their chunks, the points)
-        let lengths = [
-            ("material", self.materials.len()),
-            ("gamma_sv", self.n_gamma()),
-            ("radius", self.radius.len()),
-            ("radius2", self.n_radius2()),
-            ("t_vis", self.n_t_vis()),
-            ("k", self.k.len()),
-        ];
-        let total = lengths.iter().try_fold(1usize, |p, l| p.checked_mul(l.1));
-        if total.is_none_or(|n| n > MAX_GRID_POINTS) {
-            let (field, n) = lengths
+        if self.len() > MAX_GRID_POINTS {
+            let (field, n) = self
+                .axis_lengths()
                 .into_iter()
                 .max_by_key(|l| l.1)
                 .unwrap_or(("radius", 0));
