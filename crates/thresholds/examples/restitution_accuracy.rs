@@ -12,7 +12,7 @@
 //! ODE on the first `sample` of them the largest difference in e and whether every outcome
 //! agrees. The impact speeds are half bouncing, half double collisions (between V_on and
 //! V_stick: where that window is narrower than 1e-3 of V_stick, as for most grains, nearly all
-//! of them lie within 1e-4 of the onset, where the ODE decides); with `wide`, log-uniform from
+//! of them lie within `ONSET_MARGIN` (3e-4) of the onset, where the ODE decides); with `wide`, log-uniform from
 //! V_stick/2 to 100 V_stick (or the search limit), as an experiment's speeds would be; then
 //! also the time of all of them answered as `collision(.., ThresholdMethod::Table)` answers
 //! them (the tables, else the ODE) on every thread (`RAYON_NUM_THREADS`).
@@ -105,14 +105,17 @@ fn main() {
             start.elapsed().as_secs_f64()
         );
     }
-    let (mut worst, mut same, mut compared, mut over) = (0.0f64, 0, 0, 0);
+    let (mut worst, mut same, mut compared, mut over, mut refused) = (0.0f64, 0, 0, 0, 0);
     for ((p, k, v_in), a) in cases.iter().zip(&answers).take(sample) {
         let Some(a) = a else { continue };
         let law = CrackLaw::new(*k).unwrap();
-        let ode = Collider::new(p.contact, &law, p.t_vis)
-            .unwrap()
-            .collide(*v_in)
-            .unwrap();
+        // below the collider's T_vis bound (c_a > 3e10) the tables answer with their
+        // converged value and the ODE refuses: nothing to compare
+        let Ok(collider) = Collider::new(p.contact, &law, p.t_vis) else {
+            refused += 1;
+            continue;
+        };
+        let ode = collider.collide(*v_in).unwrap();
         let miss = (a.e - ode.e).abs();
         worst = worst.max(miss);
         if miss > 1e-4 {
@@ -121,10 +124,11 @@ fn main() {
             let th =
                 sticking_thresholds(&p.contact, &law, p.t_vis, &SearchOptions::default()).unwrap();
             eprintln!(
-                "  |e - e_ODE| = {miss:.1e}: x = {:.3}, y = {:.3}, V_in / V_stick = {:.6}, e = {:.5} (ODE {:.5})",
+                "  |e - e_ODE| = {miss:.1e}: x = {:.3}, y = {:.3}, k = {k:.5}, V_in / V_stick = {:.6}, V_on / V_stick = {:.6}, e = {:.5} (ODE {:.5})",
                 d.c_d.log10(),
                 (d.c_d * d.c_a).log10(),
                 v_in / th.v_stick.unwrap(),
+                th.v_double_onset.unwrap() / th.v_stick.unwrap(),
                 a.e,
                 ode.e
             );
@@ -133,6 +137,6 @@ fn main() {
         compared += 1;
     }
     println!(
-        "against the ODE on {compared} of them: largest |e - e_ODE| = {worst:.2e} ({over} above 1e-4), the same outcome {same} of {compared}"
+        "against the ODE on {compared} of them: largest |e - e_ODE| = {worst:.2e} ({over} above 1e-4), the same outcome {same} of {compared} ({refused} below the collider's T_vis bound, not compared)"
     );
 }

@@ -92,6 +92,36 @@ fn random_collisions_agree_with_the_ode() {
     );
 }
 
+/// Double collisions just above the onset, where e changes fast with V_in and the onset is
+/// known to the master tables' 2e-6 (`ONSET_MARGIN`): 150 random grains with a window of double
+/// collisions at least 1e-3 wide (`ln(V_stick / V_on)`), V_in from 3e-4 to 3e-3 above the onset;
+/// where the tables answer, the ODE's outcome and e within 1e-4 of it.
+#[test]
+fn double_collisions_next_to_the_onset_agree_with_the_ode() {
+    let mut rng = Rng(2031);
+    let (mut tried, mut answered) = (0, 0);
+    while tried < 150 {
+        let p = domain::draw(&mut rng, false);
+        let k = rng.restitution_k();
+        let law = CrackLaw::new(k).unwrap();
+        let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &SearchOptions::default())
+        else {
+            continue;
+        };
+        let (Some(vs), Some(von)) = (th.v_stick, th.v_double_onset) else {
+            continue;
+        };
+        if (vs / von).ln() < 1e-3 {
+            continue;
+        }
+        tried += 1;
+        let v_in = von * (1.0 + rng.log_uniform(3e-4, 3e-3));
+        answered += usize::from(point_agrees_with_the_ode(&p, &law, v_in.min(vs), vs));
+    }
+    // 126 of the 150 (2026-11-27): the rest lie in cells that failed their check
+    assert!(answered * 2 >= tried, "the tables answered {answered} of {tried}");
+}
+
 /// The embedded arrays are read in place, borrowed from the binary form (aligned for `f64`),
 /// not copied: a table is 5.9 MB, and copied its first answer cost 5-7 ms
 /// (`docs/performance.md`, "Restitution tables").
