@@ -59,6 +59,25 @@ fn point_agrees_with_the_ode(p: &domain::Point, law: &CrackLaw, v_in: f64, vs: f
     table_agrees_with_the_ode(&p.contact, law, p.t_vis, v_in, &what)
 }
 
+/// A random grain of the domain at a random k of the tables' range (every k once the k cells
+/// are built, else the tables' own), its crack law, its thresholds (m/s: V_stick, V_on) and the
+/// search limit (m/s); `None` where the search refuses it (c_a above 3e10, T_vis near 1e-16 s)
+/// or nothing bounces below the limit. `keep` screens the grain before anything is searched.
+fn random_grain(
+    rng: &mut Rng,
+    keep: impl Fn(&domain::Point) -> bool,
+) -> Option<(domain::Point, CrackLaw, f64, f64, f64)> {
+    let p = domain::draw(rng, false);
+    if !keep(&p) {
+        return None;
+    }
+    let law = CrackLaw::new(rng.restitution_k()).unwrap();
+    let opts = SearchOptions::default();
+    let th = sticking_thresholds(&p.contact, &law, p.t_vis, &opts).ok()?;
+    let v_max = opts.v_max_for(p.contact.v_stick_jkr());
+    Some((p, law, th.v_stick?, th.v_double_onset?, v_max))
+}
+
 /// 400 random collisions with bouncing below the search limit: where the tables answer, the
 /// outcome is the ODE's and e is within 1e-4 of it; they answer at least half of them.
 #[test]
@@ -71,19 +90,11 @@ fn random_collisions_agree_with_the_ode() {
     let mut rng = Rng(2029);
     let (mut tried, mut answered) = (0, 0);
     while tried < 400 {
-        let p = domain::draw(&mut rng, false);
-        // every k of the tables' range once the k cells are built, else the tables' own
-        let k = rng.restitution_k();
-        let law = CrackLaw::new(k).unwrap();
-        let opts = SearchOptions::default();
-        let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {
-            continue; // the search refuses c_a above 3e10 (T_vis near 1e-16 s)
-        };
-        let (Some(vs), Some(von)) = (th.v_stick, th.v_double_onset) else {
-            continue; // nothing bounces below the search limit
+        let Some((p, law, vs, von, v_max)) = random_grain(&mut rng, |_| true) else {
+            continue;
         };
         tried += 1;
-        let v_in = domain::impact_speed(&mut rng, vs, von, opts.v_max_for(p.contact.v_stick_jkr()));
+        let v_in = domain::impact_speed(&mut rng, vs, von, v_max);
         answered += usize::from(point_agrees_with_the_ode(&p, &law, v_in, vs));
     }
     assert!(
@@ -101,14 +112,7 @@ fn double_collisions_next_to_the_onset_agree_with_the_ode() {
     let mut rng = Rng(2031);
     let (mut tried, mut answered) = (0, 0);
     while tried < 150 {
-        let p = domain::draw(&mut rng, false);
-        let k = rng.restitution_k();
-        let law = CrackLaw::new(k).unwrap();
-        let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &SearchOptions::default())
-        else {
-            continue;
-        };
-        let (Some(vs), Some(von)) = (th.v_stick, th.v_double_onset) else {
+        let Some((p, law, vs, von, _)) = random_grain(&mut rng, |_| true) else {
             continue;
         };
         if (vs / von).ln() < 1e-3 {
@@ -119,7 +123,10 @@ fn double_collisions_next_to_the_onset_agree_with_the_ode() {
         answered += usize::from(point_agrees_with_the_ode(&p, &law, v_in.min(vs), vs));
     }
     // 126 of the 150 (2026-11-27): the rest lie in cells that failed their check
-    assert!(answered * 2 >= tried, "the tables answered {answered} of {tried}");
+    assert!(
+        answered * 2 >= tried,
+        "the tables answered {answered} of {tried}"
+    );
 }
 
 /// The embedded arrays are read in place, borrowed from the binary form (aligned for `f64`),
@@ -173,21 +180,14 @@ fn laboratory_grains_are_answered_by_the_tables() {
 fn collisions_below_y_minus_4_5_agree_with_the_ode() {
     let mut rng = Rng(4545);
     let (mut tried, mut answered) = (0, 0);
-    while tried < 150 {
-        let p = domain::draw(&mut rng, false);
+    let low = |p: &domain::Point| {
         let d = p.contact.dimensionless(p.t_vis);
-        let y = (d.c_d * d.c_a).log10();
-        if !(-5.75..=-4.5).contains(&y) {
-            continue;
-        }
-        let k = rng.restitution_k();
-        let law = CrackLaw::new(k).unwrap();
-        let opts = SearchOptions::default();
-        let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {
+        (-5.75..=-4.5).contains(&(d.c_d * d.c_a).log10())
+    };
+    while tried < 150 {
+        let Some((p, law, vs, _, v_max)) = random_grain(&mut rng, low) else {
             continue;
         };
-        let Some(vs) = th.v_stick else { continue };
-        let v_max = opts.v_max_for(p.contact.v_stick_jkr());
         if 1.01 * vs >= v_max {
             continue;
         }
