@@ -51,6 +51,42 @@ def test_table_matches_the_search_over_materials_sizes_and_geometries():
         np.testing.assert_array_equal(table.v_stick[~answered], search.v_stick[~answered])
 
 
+def test_table_matches_the_search_at_random_materials_and_search_limits():
+    # the whole domain (random materials, both geometries, reduced radius 5 nm - 1 cm, T_vis
+    # 1e-16 - 1e-3 s, k 0.005-0.05) at a random v_max a material, up to and beyond the cliff
+    # (truth: the exact search at the same v_max): values within 1e-5 and the same "no
+    # bouncing below v_max" verdicts (`examples/python/v_max_agreement.py`, 3200 points)
+    import warnings
+
+    rng = np.random.default_rng(12)
+
+    def log_uniform(lo, hi, size=None):
+        return lo * (hi / lo) ** rng.uniform(size=size)
+
+    answered = 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", st.StickinessWarning)  # Tabor, implausible radii
+        for _ in range(8):
+            m = st.Material(gamma_sv=log_uniform(0.01, 0.3), young=log_uniform(0.5e9, 200e9),
+                            poisson=rng.uniform(0.1, 0.45), density=log_uniform(500.0, 5000.0))
+            wall = bool(rng.uniform() < 0.5)
+            r = log_uniform(5e-9, 1e-2, 40)  # reduced radius (m)
+            radius = r if wall else 2 * r
+            t = log_uniform(1e-16, 1e-3, 40)
+            k = log_uniform(0.005, 0.05, 40)
+            v_max = log_uniform(1e-3, 1e2)
+            table = st.v_stick(m, radius, t, k=k, wall=wall, v_max=v_max)
+            sel = table.method == "table"
+            search = st.v_stick(m, radius[sel], t[sel], k=k[sel], wall=wall, v_max=v_max,
+                                method="search")
+            for field in ("v_stick", "v_double_onset"):
+                a, b = getattr(table, field)[sel], getattr(search, field)
+                np.testing.assert_array_equal(np.isnan(a), np.isnan(b), err_msg=field)
+                np.testing.assert_allclose(a, b, rtol=TABLE_REL_TOL, err_msg=field)
+            answered += int(sel.sum())
+    assert answered >= 300, answered  # of 320
+
+
 def test_method_is_an_array_of_strings_for_arrays():
     # beyond the cliff (T_vis = 1e-6 s for 60 um CO2 nothing bounces) the table says so itself;
     # k = 0.06 (outside the tables' 0.005-0.05) goes to the search
