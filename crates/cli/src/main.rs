@@ -54,9 +54,9 @@ enum Command {
     /// Fragmentation velocity of aggregates V_frag = 10 V_stick.
     ///
     /// Without --t-vis or --t-vis-law, T_vis = 0: the JKR limit V_frag,JKR. V_stick is that of
-    /// two monomers (Section 6: identical spheres of radius --radius); --radius2 and --wall
-    /// change the monomer contact whose V_stick is scaled, while the factor 10 (Wada et al.
-    /// 2013) was found for aggregates of identical monomers.
+    /// two monomers (Section 6: identical spheres of radius --radius); with --radius2 or --wall
+    /// it is 10 V_stick of that pair instead, an extrapolation of the factor 10 that Wada et
+    /// al. (2013) found for aggregates of identical monomers.
     VFrag(commands::v_frag::VFragArgs),
     /// V_stick, V_double_onset, V_stick,JKR and V_frag over a grid, into a file that survives
     /// being killed.

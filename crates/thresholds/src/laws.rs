@@ -106,9 +106,10 @@ impl TVisLaw {
 
     /// Relaxation time T_vis (s) of a grain of radius `r1` (m).
     ///
-    /// The law is a power of `r1`, defined for `r1 > 0`; any other `r1` gives NaN (or 0 at
-    /// `r1 = 0`), which a collision or search then refuses by name (`t_vis = NaN: must be > 0
-    /// ...`). The CLI, Python and the sweeps check the radius first.
+    /// The law is a power of `r1`, meant for `r1 > 0` and finite: a negative `r1` gives NaN,
+    /// which a collision or search then refuses by name (`t_vis = NaN: must be > 0 ...`), `r1
+    /// = 0` gives 0 (the JKR limit, which a threshold answers as such) and an infinite `r1`
+    /// infinity. The CLI, Python and the sweeps check the radius first.
     ///
     /// # Example
     /// ```

@@ -6,7 +6,7 @@
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
-use thresholds::restitution::collision;
+use thresholds::restitution::{collision, ONSET_MARGIN};
 use thresholds::{
     sticking_thresholds, Collider, Contact, CrackLaw, Geometry, Material, RestitutionTables,
     SearchOptions, SolverOptions, ThresholdMethod,
@@ -103,10 +103,13 @@ fn random_collisions_agree_with_the_ode() {
     );
 }
 
-/// Double collisions just above the onset, where e changes fast with V_in and the onset is
-/// known to the master tables' 2e-6 (`ONSET_MARGIN`): 150 random grains with a window of double
-/// collisions at least 1e-3 wide (`ln(V_stick / V_on)`), V_in from 3e-4 to 3e-3 above the onset;
-/// where the tables answer, the ODE's outcome and e within 1e-4 of it.
+/// Double collisions just above the onset, where e changes fast with V_in and the tables know
+/// the onset only to the master tables' 2e-6: 150 random grains with a window of double
+/// collisions at least 1e-3 wide (`ln(V_stick / V_on)`), V_in from the tables' margin
+/// (`ONSET_MARGIN`, 3e-4) to 3e-3 above the onset and in the lower half of the window; where
+/// the tables answer, the ODE's outcome and e within 1e-4 of it. (The two misses that set the
+/// margin, 1.1e-4 and 1.4e-4 with a margin of 1e-4, were 2 of 69 160 random collisions: a draw
+/// this size would not meet them.)
 #[test]
 fn double_collisions_next_to_the_onset_agree_with_the_ode() {
     let mut rng = Rng(2031);
@@ -115,14 +118,16 @@ fn double_collisions_next_to_the_onset_agree_with_the_ode() {
         let Some((p, law, vs, von, _)) = random_grain(&mut rng, |_| true) else {
             continue;
         };
-        if (vs / von).ln() < 1e-3 {
+        let window = (vs / von).ln();
+        if window < 1e-3 {
             continue;
         }
         tried += 1;
-        let v_in = von * (1.0 + rng.log_uniform(3e-4, 3e-3));
-        answered += usize::from(point_agrees_with_the_ode(&p, &law, v_in.min(vs), vs));
+        let above = rng.log_uniform(ONSET_MARGIN * 1.01, (0.5 * window).min(3e-3));
+        let v_in = von * above.exp();
+        answered += usize::from(point_agrees_with_the_ode(&p, &law, v_in, vs));
     }
-    // 126 of the 150 (2026-11-27): the rest lie in cells that failed their check
+    // 132 of the 150 (2026-11-27); the rest lie in cells that failed their check or near the cliff
     assert!(
         answered * 2 >= tried,
         "the tables answered {answered} of {tried}"

@@ -67,7 +67,7 @@ static BYTES: &[u8] = &ALIGNED.0;
 /// Within this relative distance of V_double_onset (where the outcome jumps from sticking to a
 /// double collision) the ODE decides. Just above the onset e changes fast with V_in and the
 /// onset is known to the master tables' 2e-6: with 1e-4 here, 2 of 69 160 random collisions
-/// answered missed e by 1.1e-4 and 1.4e-4 at 1.6e-4 and 2.2e-4 above the onset; with 3e-4 the
+/// compared missed e by 1.1e-4 and 1.4e-4 at 1.6e-4 and 2.2e-4 above the onset; with 3e-4 the
 /// largest miss of 64 553 is 6.0e-5 (`examples/restitution_accuracy.rs -- 100000 100000`).
 pub const ONSET_MARGIN: f64 = 3e-4;
 
