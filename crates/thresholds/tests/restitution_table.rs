@@ -78,6 +78,29 @@ fn random_grain(
     Some((p, law, th.v_stick?, th.v_double_onset?, v_max))
 }
 
+/// Collisions of `n` random grains ([`random_grain`], screened by `keep`), each at the impact
+/// speed `speed` draws from `(V_stick, V_on, v_max)` (m/s; `None`: the grain is skipped,
+/// uncounted), checked by [`point_agrees_with_the_ode`]: `(answered by the tables, tried)`.
+fn tally(
+    rng: &mut Rng,
+    n: usize,
+    keep: impl Fn(&domain::Point) -> bool,
+    mut speed: impl FnMut(&mut Rng, f64, f64, f64) -> Option<f64>,
+) -> (usize, usize) {
+    let (mut tried, mut answered) = (0, 0);
+    while tried < n {
+        let Some((p, law, vs, von, v_max)) = random_grain(rng, &keep) else {
+            continue;
+        };
+        let Some(v_in) = speed(rng, vs, von, v_max) else {
+            continue;
+        };
+        tried += 1;
+        answered += usize::from(point_agrees_with_the_ode(&p, &law, v_in, vs));
+    }
+    (answered, tried)
+}
+
 /// 400 random collisions with bouncing below the search limit: where the tables answer, the
 /// outcome is the ODE's and e is within 1e-4 of it; they answer at least half of them.
 #[test]
@@ -87,16 +110,12 @@ fn random_collisions_agree_with_the_ode() {
         !tables.table_k().is_empty(),
         "no restitution table is embedded"
     );
-    let mut rng = Rng(2029);
-    let (mut tried, mut answered) = (0, 0);
-    while tried < 400 {
-        let Some((p, law, vs, von, v_max)) = random_grain(&mut rng, |_| true) else {
-            continue;
-        };
-        tried += 1;
-        let v_in = domain::impact_speed(&mut rng, vs, von, v_max);
-        answered += usize::from(point_agrees_with_the_ode(&p, &law, v_in, vs));
-    }
+    let (answered, tried) = tally(
+        &mut Rng(2029),
+        400,
+        |_| true,
+        |rng, vs, von, v_max| Some(domain::impact_speed(rng, vs, von, v_max)),
+    );
     assert!(
         answered * 2 >= tried,
         "the tables answered {answered} of {tried}"
@@ -112,21 +131,18 @@ fn random_collisions_agree_with_the_ode() {
 /// a test of their own below, which fails with the old margin of 1e-4.)
 #[test]
 fn double_collisions_next_to_the_onset_agree_with_the_ode() {
-    let mut rng = Rng(2031);
-    let (mut tried, mut answered) = (0, 0);
-    while tried < 150 {
-        let Some((p, law, vs, von, _)) = random_grain(&mut rng, |_| true) else {
-            continue;
-        };
-        let window = (vs / von).ln();
-        if window < 1e-3 {
-            continue;
-        }
-        tried += 1;
-        let above = rng.log_uniform(ONSET_MARGIN * 1.01, (0.5 * window).min(3e-3));
-        let v_in = von * above.exp();
-        answered += usize::from(point_agrees_with_the_ode(&p, &law, v_in, vs));
-    }
+    let (answered, tried) = tally(
+        &mut Rng(2031),
+        150,
+        |_| true,
+        |rng, vs, von, _| {
+            let window = (vs / von).ln();
+            (window >= 1e-3).then(|| {
+                let above = rng.log_uniform(ONSET_MARGIN * 1.01, (0.5 * window).min(3e-3));
+                von * above.exp()
+            })
+        },
+    );
     // 132 of the 150 (2026-11-27); the rest lie in cells that failed their check or near the cliff
     assert!(
         answered * 2 >= tried,
@@ -227,23 +243,13 @@ fn laboratory_grains_are_answered_by_the_tables() {
 /// the ODE, and they answer at least 45 % (52 % after the refill, none before).
 #[test]
 fn collisions_below_y_minus_4_5_agree_with_the_ode() {
-    let mut rng = Rng(4545);
-    let (mut tried, mut answered) = (0, 0);
     let low = |p: &domain::Point| {
         let d = p.contact.dimensionless(p.t_vis);
         (-5.75..=-4.5).contains(&(d.c_d * d.c_a).log10())
     };
-    while tried < 150 {
-        let Some((p, law, vs, _, v_max)) = random_grain(&mut rng, low) else {
-            continue;
-        };
-        if 1.01 * vs >= v_max {
-            continue;
-        }
-        tried += 1;
-        let v_in = rng.log_uniform(1.01 * vs, (100.0 * vs).min(v_max));
-        answered += usize::from(point_agrees_with_the_ode(&p, &law, v_in, vs));
-    }
+    let (answered, tried) = tally(&mut Rng(4545), 150, low, |rng, vs, _, v_max| {
+        (1.01 * vs < v_max).then(|| rng.log_uniform(1.01 * vs, (100.0 * vs).min(v_max)))
+    });
     assert!(
         answered * 100 >= tried * 45,
         "the tables answered {answered} of {tried}"

@@ -21,8 +21,8 @@
 //! 5e-5, half the 1e-4 promised), and each interval between tables of neighbouring k likewise;
 //! elsewhere (near the cliff, a double-collision window narrower than 1e-4 of V_stick, speeds
 //! beyond 9.5 e-folds above V_stick, within 1e-5 of V_stick ([`STICK_MARGIN`]) or below the
-//! first channel (sigma or nu = 1e-4), within 3e-4 of the onset ([`ONSET_MARGIN`]), within 0.05 in x of the cliff
-//! ([`CLIFF_MARGIN`])) the caller integrates the ODE.
+//! first channel (sigma or nu = 1e-4), within 3e-4 of the onset ([`ONSET_MARGIN`]), within
+//! 0.05 in x of the cliff ([`CLIFF_MARGIN`])) the caller integrates the ODE.
 //!
 //! # Example
 //! ```
