@@ -6,6 +6,7 @@
 
 use crate::figures::Error;
 use numerics::format::number;
+use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use thresholds::master::build::beyond::{check_beyond_table, check_levels};
@@ -26,9 +27,10 @@ use thresholds::master::{ends_to_text, table_to_text};
 /// [`CHECK_LEVELS_EVERY`] keep `cargo xtask test` within 7 minutes on a fresh clone.
 pub const CHECK_EVERY: usize = 500;
 
-/// `--check` checks beyond their ends every this-many-th row that is not monotone in each table
-/// (about 25 of the 340 rows of the eleven tables, 12 searches each, up to F = F_TOP: the costly
-/// ones; every 4th, 85 rows, took 85 s).
+/// `--check` checks beyond their ends every this-many-th row that is not monotone in each table,
+/// from the middle of the first stride (21 of the 340 rows of the eleven tables, 12 searches
+/// each, up to F = F_TOP: the costly ones, 63 s on one thread; every 4th, 85 rows, took 85 s on
+/// two; [`check_levels`]).
 pub const CHECK_LEVELS_EVERY: usize = 16;
 
 /// `--check` recomputes every this-many-th point of the end curves (about 40 of 33 000).
@@ -329,8 +331,18 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
             tables.len().saturating_sub(1)
         );
     }
-    for t in tables {
-        let checked = check_nodes(&t, CHECK_EVERY)?;
+    // every table at once (a table's few rows beyond the ends would leave a core idle), then
+    // each reported in order
+    let results: Vec<_> = tables
+        .par_iter()
+        .map(|t| {
+            let nodes = check_nodes(t, CHECK_EVERY)?;
+            let levels = check_levels(&BuildConfig::standard(), t, CHECK_LEVELS_EVERY)?;
+            Ok::<_, thresholds::ThresholdsError>((nodes, levels))
+        })
+        .collect();
+    for (t, result) in tables.iter().zip(results) {
+        let (checked, (moved, rows)) = result?;
         if let Some(r) = checked.iter().find(|r| r.moved()) {
             return Err(format!(
                 "the master table of k = {} is stale: {} is {}, the model now gives {}; run `cargo xtask master-table`",
@@ -338,7 +350,6 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
             )
             .into());
         }
-        let (moved, rows) = check_levels(&BuildConfig::standard(), &t, CHECK_LEVELS_EVERY)?;
         if let Some(y) = moved {
             return Err(format!(
                 "the master table of k = {} is stale: beyond the ends of its row y = {y} something now bounces below the row's level; run `cargo xtask master-table --part beyond`",

@@ -11,6 +11,7 @@
 use crate::figures::Error;
 use crate::master_table::{committed_ends, data_dir};
 use numerics::format::number;
+use rayon::prelude::*;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 use thresholds::master::build::grid_k;
@@ -37,14 +38,18 @@ pub fn table_path(root: &Path, k: f64) -> PathBuf {
 /// The committed restitution tables, in increasing k: one for each master table that has one
 /// (they are built one k at a time).
 pub fn committed(root: &Path) -> Result<Vec<TableData>, Error> {
-    MasterTables::standard()
+    let paths: Vec<PathBuf> = MasterTables::standard()
         .table_k()
         .iter()
         .map(|&k| table_path(root, k))
         .filter(|path| path.exists())
+        .collect();
+    // parsed at once (10 MB of text a table)
+    paths
+        .par_iter()
         .map(|path| {
             let text =
-                std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+                std::fs::read_to_string(path).map_err(|e| format!("{}: {e}", path.display()))?;
             parse(&text)
                 .map_err(|e| format!("{}, line {}: {}", path.display(), e.line, e.problem).into())
         })
@@ -229,51 +234,11 @@ fn write_k_cells(
 
 /// Recomputes a sample of the committed values; an error naming the first that moved.
 pub fn run_check(root: &Path) -> Result<(), Error> {
-    let cfg = BuildConfig::standard();
-    let masters = MasterTables::standard();
-    for t in committed(root)? {
-        let law = CrackLaw::new(t.k)?;
-        let mut checked = 0;
-        let channels = cfg.sigma.len() + cfg.nu.len();
-        let all = t
-            .rows
-            .iter()
-            .flat_map(|r| r.nodes.iter().map(move |p| (r.y, p)));
-        for (n, (y, p)) in all.enumerate() {
-            if !p.f.is_finite() {
-                continue;
-            }
-            let c = n * 7 % channels;
-            if n % (CHECK_EVERY / channels).max(1) != 0 || !p.h[c].is_finite() {
-                continue;
-            }
-            let bouncing = c < cfg.sigma.len();
-            let q = if bouncing {
-                cfg.sigma[c]
-            } else {
-                cfg.nu[c - cfg.sigma.len()]
-            };
-            // the thresholds as the build had them (the file rounds them)
-            let Some((f, f_on)) = ratios(masters, p.x, y, t.k) else {
-                return Err(format!(
-                    "the restitution table of k = {} is stale: the master tables no longer vouch for x = {}, y = {y}",
-                    t.k, p.x
-                )
-                .into());
-            };
-            let now = thresholds::restitution::build::node_channel(
-                &cfg, &law, p.x, y, f, f_on, bouncing, q,
-            );
-            let within = (now - p.h[c]).abs() <= CHECK_TOL * p.h[c].abs().max(1e-6);
-            if !within {
-                return Err(format!(
-                    "the restitution table of k = {} is stale: h at x = {}, y = {y}, {} = {q} is {}, the model now gives {now}; run `cargo xtask restitution-table`",
-                    t.k, p.x, if bouncing { "sigma" } else { "nu" }, p.h[c]
-                )
-                .into());
-            }
-            checked += 1;
-        }
+    let tables = committed(root)?;
+    // every table at once (one table's values are recomputed in turn), each reported in order
+    let results: Vec<Result<usize, String>> = tables.par_iter().map(check_table).collect();
+    for (t, result) in tables.iter().zip(results) {
+        let checked = result?;
         eprintln!(
             "restitution-table --check: k = {}: {checked} values recomputed, all within {}",
             number(t.k),
@@ -281,4 +246,50 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
         );
     }
     Ok(())
+}
+
+/// `--check` of one table: how many values were recomputed, or what is stale.
+fn check_table(t: &TableData) -> Result<usize, String> {
+    let cfg = BuildConfig::standard();
+    let masters = MasterTables::standard();
+    let law = CrackLaw::new(t.k).map_err(|e| e.to_string())?;
+    let mut checked = 0;
+    let channels = cfg.sigma.len() + cfg.nu.len();
+    let all = t
+        .rows
+        .iter()
+        .flat_map(|r| r.nodes.iter().map(move |p| (r.y, p)));
+    for (n, (y, p)) in all.enumerate() {
+        if !p.f.is_finite() {
+            continue;
+        }
+        let c = n * 7 % channels;
+        if n % (CHECK_EVERY / channels).max(1) != 0 || !p.h[c].is_finite() {
+            continue;
+        }
+        let bouncing = c < cfg.sigma.len();
+        let q = if bouncing {
+            cfg.sigma[c]
+        } else {
+            cfg.nu[c - cfg.sigma.len()]
+        };
+        // the thresholds as the build had them (the file rounds them)
+        let Some((f, f_on)) = ratios(masters, p.x, y, t.k) else {
+            return Err(format!(
+                "the restitution table of k = {} is stale: the master tables no longer vouch for x = {}, y = {y}",
+                t.k, p.x
+            ));
+        };
+        let now =
+            thresholds::restitution::build::node_channel(&cfg, &law, p.x, y, f, f_on, bouncing, q);
+        let within = (now - p.h[c]).abs() <= CHECK_TOL * p.h[c].abs().max(1e-6);
+        if !within {
+            return Err(format!(
+                "the restitution table of k = {} is stale: h at x = {}, y = {y}, {} = {q} is {}, the model now gives {now}; run `cargo xtask restitution-table`",
+                t.k, p.x, if bouncing { "sigma" } else { "nu" }, p.h[c]
+            ));
+        }
+        checked += 1;
+    }
+    Ok(checked)
 }
