@@ -130,7 +130,7 @@ fn main() -> ExitCode {
             println!("{}", w.display());
         }),
         Command::RestitutionTable { check: true, .. } => {
-            xtask::restitution_table::run_check(&workspace_root())
+            xtask::restitution_table::run_check(&workspace_root(), &mut |s| eprintln!("{s}"))
         }
         Command::RestitutionTable {
             refine: true, only, ..
@@ -150,7 +150,7 @@ fn main() -> ExitCode {
             xtask::restitution_table::run_build(&workspace_root(), &only)
         }
         Command::MasterTable { check: true, .. } => {
-            xtask::master_table::run_check(&workspace_root())
+            xtask::master_table::run_check(&workspace_root(), &mut |s| eprintln!("{s}"))
         }
         Command::MasterTable {
             part,

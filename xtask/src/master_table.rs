@@ -303,8 +303,8 @@ fn write_table(root: &Path, t: &TableData, progress: &dyn Fn(&str)) -> Result<()
 }
 
 /// Recomputes a sample of the committed tables' nodes and end points; an error naming the first
-/// that moved.
-pub fn run_check(root: &Path) -> Result<(), Error> {
+/// that moved. Each line of the report goes to `say`.
+pub fn run_check(root: &Path, say: &mut dyn FnMut(String)) -> Result<(), Error> {
     let ends = committed_ends(root)?;
     let checked = check_ends(&ends, CHECK_ENDS_EVERY)?;
     if let Some(r) = checked.iter().find(|r| r.moved()) {
@@ -314,22 +314,22 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
         )
         .into());
     }
-    eprintln!(
+    say(format!(
         "master-table --check: {} end points recomputed, all within {} ({} below y = {}, where the roots are ill-conditioned)",
         checked.len(),
         number(END_TOL),
         number(ILL_CONDITIONED_TOL),
         number(ILL_CONDITIONED_BELOW_Y)
-    );
+    ));
     let tables = committed_tables(root)?;
     let intervals = ends.kcheck.len() / ends.kcheck_y.2.max(1);
     if intervals != tables.len().saturating_sub(1) {
-        eprintln!(
+        say(format!(
             "master-table --check: the k checks cover {intervals} intervals, the {} tables make {}: \
              only the tables' own k are answered until `cargo xtask master-table --part kcheck`",
             tables.len(),
             tables.len().saturating_sub(1)
-        );
+        ));
     }
     // every table at once (a table's few rows beyond the ends would leave a core idle), then
     // each reported in order
@@ -357,12 +357,12 @@ pub fn run_check(root: &Path) -> Result<(), Error> {
             )
             .into());
         }
-        eprintln!(
+        say(format!(
             "master-table --check: k = {}: {} values recomputed, all within {}; the levels of {rows} rows checked beyond their ends",
             t.k,
             checked.len(),
             number(NODE_REL_TOL)
-        );
+        ));
     }
     Ok(())
 }

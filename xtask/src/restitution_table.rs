@@ -233,17 +233,17 @@ fn write_k_cells(
 }
 
 /// Recomputes a sample of the committed values; an error naming the first that moved.
-pub fn run_check(root: &Path) -> Result<(), Error> {
+pub fn run_check(root: &Path, say: &mut dyn FnMut(String)) -> Result<(), Error> {
     let tables = committed(root)?;
     // every table at once (one table's values are recomputed in turn), each reported in order
     let results: Vec<Result<usize, String>> = tables.par_iter().map(check_table).collect();
     for (t, result) in tables.iter().zip(results) {
         let checked = result?;
-        eprintln!(
+        say(format!(
             "restitution-table --check: k = {}: {checked} values recomputed, all within {}",
             number(t.k),
             number(CHECK_TOL)
-        );
+        ));
     }
     Ok(())
 }

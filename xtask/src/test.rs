@@ -3,7 +3,8 @@
 //!
 //! 1. `cargo test --workspace` (which also builds the `stickiness` binary), then
 //!    `cargo xtask master-table --check` and `cargo xtask restitution-table --check` (a sample
-//!    of the tables' values recomputed; in a thread beside steps 3-5 when they run);
+//!    of the tables' values recomputed; in a thread beside steps 4-5 when they run, their
+//!    report printed after them in one piece);
 //! 2. made in a thread while step 1 runs (most of it waits on downloads): a virtual
 //!    environment under `target/venv` with the Python test dependencies, DustPy for the
 //!    coupling tests (its PyPI release is a source distribution built with meson and f2py, so
@@ -145,7 +146,7 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
         }
         let Some(environment) = environment else {
             return if parts.rust {
-                table_checks(root)
+                table_checks(root, &mut |s| eprintln!("{s}"))
             } else {
                 Ok(())
             };
@@ -157,10 +158,15 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
         // the tables' checks beside the Python tests, whose one thread leaves a core idle most
         // of the time (pytest, pip, the notebook's kernel): a minute less on two cores; after
         // the wheel's build, which would share the cores with them
-        let checks = parts.rust.then(|| s.spawn(|| table_checks(root)));
+        let checks = parts.rust.then(|| s.spawn(|| table_checks_kept(root)));
         let python = python_tests(root, &venv, &wheel);
         if let Some(checks) = checks {
-            checks.join().map_err(|_| "the tables' checks panicked")??;
+            if !checks.is_finished() {
+                eprintln!("(waiting for the tables' checks)");
+            }
+            let (lines, outcome) = checks.join().map_err(|_| "the tables' checks panicked")?;
+            lines.iter().for_each(|l| eprintln!("{l}"));
+            outcome?;
         }
         python
     })
@@ -175,12 +181,20 @@ fn rust_tests(root: &Path) -> Result<(), Error> {
 }
 
 /// The master and restitution tables' checks: a change of the model must not leave the
-/// committed tables stale.
-fn table_checks(root: &Path) -> Result<(), Error> {
-    eprintln!("+ cargo xtask master-table --check");
-    crate::master_table::run_check(root)?;
-    eprintln!("+ cargo xtask restitution-table --check");
-    crate::restitution_table::run_check(root)
+/// committed tables stale. Each line of their report goes to `say`.
+fn table_checks(root: &Path, say: &mut dyn FnMut(String)) -> Result<(), Error> {
+    say("+ cargo xtask master-table --check".into());
+    crate::master_table::run_check(root, say)?;
+    say("+ cargo xtask restitution-table --check".into());
+    crate::restitution_table::run_check(root, say)
+}
+
+/// [`table_checks`] beside other output (pytest's): its report kept and returned with the
+/// outcome, to be printed in one piece afterwards instead of between pytest's dots.
+fn table_checks_kept(root: &Path) -> (Vec<String>, Result<(), Error>) {
+    let mut lines = Vec::new();
+    let outcome = table_checks(root, &mut |s| lines.push(s));
+    (lines, outcome)
 }
 
 /// The virtual environment with the test requirements, DustPy and the site's builders.
