@@ -189,11 +189,17 @@ fn table_checks(root: &Path, say: &mut dyn FnMut(String)) -> Result<(), Error> {
     crate::restitution_table::run_check(root, say)
 }
 
-/// [`table_checks`] beside other output (pytest's): its report kept and returned with the
-/// outcome, to be printed in one piece afterwards instead of between pytest's dots.
+/// [`table_checks`] beside pytest: on one thread of their own, so that pytest (one process,
+/// whose array calls use every core) keeps a core; their report kept and returned with the
+/// outcome, to be printed in one piece afterwards instead of between pytest's dots. On both
+/// cores the checks had slowed pytest from 85 s alone to 204 s beside them (a fresh clone,
+/// 2026-11-27), so that pytest, not the checks, ended the run.
 fn table_checks_kept(root: &Path) -> (Vec<String>, Result<(), Error>) {
     let mut lines = Vec::new();
-    let outcome = table_checks(root, &mut |s| lines.push(s));
+    let outcome = match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
+        Ok(pool) => pool.install(|| table_checks(root, &mut |s| lines.push(s))),
+        Err(e) => Err(format!("a thread for the tables' checks: {e}").into()),
+    };
     (lines, outcome)
 }
 
