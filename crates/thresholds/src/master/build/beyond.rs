@@ -106,14 +106,14 @@ pub fn check_levels(
     every: usize,
 ) -> Result<(Option<f64>, usize), ThresholdsError> {
     let law = CrackLaw::new(table.k)?;
-    let every = every.max(1);
     let candidates: Vec<&RowData> = table
         .rows
         .iter()
         .filter(|r| !r.monotone && r.none_beyond > 0.0)
         .collect();
-    let first = (every / 2).min(candidates.len() / 2);
-    let rows: Vec<&RowData> = candidates.into_iter().skip(first).step_by(every).collect();
+    let rows: Vec<&RowData> = mid_stride(candidates.len(), every)
+        .map(|i| candidates[i])
+        .collect();
     let moved = rows
         .par_iter()
         .filter(|r| {
@@ -123,4 +123,28 @@ pub fn check_levels(
         .map(|r| r.y)
         .min_by(f64::total_cmp);
     Ok((moved, rows.len()))
+}
+
+/// The indices of `n` items that [`check_levels`] samples: every `every`-th from the middle of
+/// the first stride, or the middle item where there are fewer.
+fn mid_stride(n: usize, every: usize) -> impl Iterator<Item = usize> {
+    let every = every.max(1);
+    ((every / 2).min(n / 2)..n).step_by(every)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::mid_stride;
+
+    /// Every 16th of 40 from the 8th; of fewer than a stride, the middle one; of none, none.
+    #[test]
+    fn the_sample_starts_mid_stride() {
+        let of = |n, every| mid_stride(n, every).collect::<Vec<_>>();
+        assert_eq!(of(40, 16), [8, 24]);
+        assert_eq!(of(41, 16), [8, 24, 40]);
+        assert_eq!(of(5, 16), [2]);
+        assert_eq!(of(1, 16), [0]);
+        assert!(of(0, 16).is_empty());
+        assert_eq!(of(3, 1), [0, 1, 2]);
+    }
 }
