@@ -44,8 +44,8 @@ pub fn committed(root: &Path) -> Result<Vec<TableData>, Error> {
         .map(|&k| table_path(root, k))
         .filter(|path| path.exists())
         .collect();
-    // parsed at once (10 MB of text a table)
-    paths
+    // parsed at once (10 MB of text a table); the first error in k order is reported
+    let parsed: Vec<Result<TableData, Error>> = paths
         .par_iter()
         .map(|path| {
             let text =
@@ -53,7 +53,8 @@ pub fn committed(root: &Path) -> Result<Vec<TableData>, Error> {
             parse(&text)
                 .map_err(|e| format!("{}, line {}: {}", path.display(), e.line, e.problem).into())
         })
-        .collect()
+        .collect();
+    parsed.into_iter().collect()
 }
 
 /// Builds every table (or `only` these indices) and their k cells, and writes them.

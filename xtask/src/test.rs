@@ -134,6 +134,8 @@ fn shown(cmd: &Command) -> String {
 /// Runs the requested parts from the workspace `root`. The Python environment (downloads,
 /// DustPy's Fortran build) is made while the Rust tests run: most of it waits on the network.
 pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
+    // the tables' checks' report while they run beside pytest (see below)
+    let lines = std::sync::Mutex::new(Vec::new());
     std::thread::scope(|s| {
         let environment = parts.python.then(|| {
             s.spawn(|| {
@@ -155,18 +157,22 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
             .join()
             .map_err(|_| "making the Python environment panicked")??;
         let wheel = install_wheel(root, &venv)?;
-        // the tables' checks beside the Python tests, whose one thread leaves a core idle most
-        // of the time (pytest, pip, the notebook's kernel): a minute less on two cores; after
-        // the wheel's build, which would share the cores with them
-        let checks = parts.rust.then(|| s.spawn(|| table_checks_kept(root)));
+        // the tables' checks beside the Python tests (pytest, pip, the notebook's kernel, the
+        // site), which leave part of the two cores idle; after the wheel's build, which would
+        // share the cores with them. Their report is kept in `lines`, printed even if
+        // their thread panics.
+        let checks = parts
+            .rust
+            .then(|| s.spawn(|| table_checks_kept(root, &lines)));
         let python = python_tests(root, &venv, &wheel);
         if let Some(checks) = checks {
             if !checks.is_finished() {
                 eprintln!("(waiting for the tables' checks)");
             }
-            let (lines, outcome) = checks.join().map_err(|_| "the tables' checks panicked")?;
-            lines.iter().for_each(|l| eprintln!("{l}"));
-            outcome?;
+            let outcome = checks.join();
+            let kept = std::mem::take(&mut *lines.lock().unwrap_or_else(|e| e.into_inner()));
+            kept.iter().for_each(|l| eprintln!("{l}"));
+            outcome.map_err(|_| "the tables' checks panicked")??;
         }
         python
     })
@@ -190,17 +196,16 @@ fn table_checks(root: &Path, say: &mut dyn FnMut(String)) -> Result<(), Error> {
 }
 
 /// [`table_checks`] beside pytest: on one thread of their own, so that pytest (one process,
-/// whose array calls use every core) keeps a core; their report kept and returned with the
-/// outcome, to be printed in one piece afterwards instead of between pytest's dots. On both
-/// cores the checks had slowed pytest from 85 s alone to 204 s beside them (a fresh clone,
-/// 2026-11-27), so that pytest, not the checks, ended the run.
-fn table_checks_kept(root: &Path) -> (Vec<String>, Result<(), Error>) {
-    let mut lines = Vec::new();
-    let outcome = match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
-        Ok(pool) => pool.install(|| table_checks(root, &mut |s| lines.push(s))),
+/// whose array calls use every core) keeps a core; their report kept in `lines`, to be printed
+/// in one piece afterwards instead of between pytest's dots. On both cores the checks had
+/// slowed pytest from 85 s alone to 204 s beside them (a fresh clone, 2026-11-27), so that
+/// pytest, not the checks, ended the run.
+fn table_checks_kept(root: &Path, lines: &std::sync::Mutex<Vec<String>>) -> Result<(), Error> {
+    let mut keep = |s: String| lines.lock().unwrap_or_else(|e| e.into_inner()).push(s);
+    match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
+        Ok(pool) => pool.install(|| table_checks(root, &mut keep)),
         Err(e) => Err(format!("a thread for the tables' checks: {e}").into()),
-    };
-    (lines, outcome)
+    }
 }
 
 /// The virtual environment with the test requirements, DustPy and the site's builders.
