@@ -12,10 +12,11 @@
 //! ODE on the first `sample` of them the largest difference in e and whether every outcome
 //! agrees. The impact speeds are half bouncing, half double collisions (between V_on and
 //! V_stick: where that window is narrower than 1e-3 of V_stick, as for most grains, nearly all
-//! of them lie within `ONSET_MARGIN` (3e-4) of the onset, where the ODE decides); with `wide`, log-uniform from
-//! V_stick/2 to 100 V_stick (or the search limit), as an experiment's speeds would be; then
-//! also the time of all of them answered as `collision(.., ThresholdMethod::Table)` answers
-//! them (the tables, else the ODE) on every thread (`RAYON_NUM_THREADS`).
+//! of them lie within `ONSET_MARGIN` (3e-4) of the onset, where the ODE decides); with `wide`,
+//! log-uniform from V_stick/2 to 100 V_stick (or the search limit), as an experiment's speeds
+//! would be; then also the time of all of them answered as `collision(..,
+//! ThresholdMethod::Table)` answers them (the tables, else the ODE) on every thread
+//! (`RAYON_NUM_THREADS`).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
