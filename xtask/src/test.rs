@@ -3,8 +3,8 @@
 //!
 //! 1. `cargo test --workspace` (which also builds the `stickiness` binary), then
 //!    `cargo xtask master-table --check` and `cargo xtask restitution-table --check` (a sample
-//!    of the tables' values recomputed; in a thread beside steps 4-5 when they run, their
-//!    report printed after them in one piece);
+//!    of the tables' values recomputed; beside everything else when steps 2-5 run, at a lower
+//!    priority, their report printed after them in one piece);
 //! 2. made in a thread while step 1 runs (most of it waits on downloads): a virtual
 //!    environment under `target/venv` with the Python test dependencies, DustPy for the
 //!    coupling tests (its PyPI release is a source distribution built with meson and f2py, so
@@ -25,6 +25,7 @@
 use crate::python::Venv;
 use std::path::Path;
 use std::process::Command;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Any failure of the test run.
 pub type Error = Box<dyn std::error::Error + Send + Sync>;
@@ -134,8 +135,10 @@ fn shown(cmd: &Command) -> String {
 /// Runs the requested parts from the workspace `root`. The Python environment (downloads,
 /// DustPy's Fortran build) is made while the Rust tests run: most of it waits on the network.
 pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
-    // the tables' checks' report while they run beside pytest (see below)
+    // the tables' checks' report while they run beside the rest (see below), and the word to
+    // abandon them when the run fails first
     let lines = std::sync::Mutex::new(Vec::new());
+    let abandon = AtomicBool::new(false);
     std::thread::scope(|s| {
         let environment = parts.python.then(|| {
             s.spawn(|| {
@@ -143,38 +146,43 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
                     .inspect_err(|e| eprintln!("error: making the Python environment: {e}"))
             })
         });
-        if parts.rust {
-            rust_tests(root)?;
-        }
-        let Some(environment) = environment else {
-            return if parts.rust {
-                table_checks(root, &mut |s| eprintln!("{s}"))
-            } else {
-                Ok(())
-            };
-        };
-        let venv = environment
-            .join()
-            .map_err(|_| "making the Python environment panicked")??;
-        let wheel = install_wheel(root, &venv)?;
-        // the tables' checks beside the Python tests (pytest, pip, the notebook's kernel, the
-        // site), which leave part of the two cores idle; after the wheel's build, which would
-        // share the cores with them. Their report is kept in `lines`, printed even if
-        // their thread panics.
-        let checks = parts
-            .rust
-            .then(|| s.spawn(|| table_checks_kept(root, &lines)));
-        let python = python_tests(root, &venv, &wheel);
-        if let Some(checks) = checks {
-            if !checks.is_finished() {
-                eprintln!("(waiting for the tables' checks)");
+        // with the Python part, the tables' checks run from the start beside everything else
+        // (the test build, the Rust tests, the wheel, pytest, the site) at a lower priority:
+        // they take the cores the others leave idle. Their report is kept in `lines`,
+        // printed even if their thread panics.
+        let checks = (parts.rust && parts.python)
+            .then(|| s.spawn(|| table_checks_kept(root, &lines, &abandon)));
+        let outcome = (|| {
+            if parts.rust {
+                rust_tests(root)?;
             }
-            let outcome = checks.join();
-            let kept = std::mem::take(&mut *lines.lock().unwrap_or_else(|e| e.into_inner()));
-            kept.iter().for_each(|l| eprintln!("{l}"));
-            outcome.map_err(|_| "the tables' checks panicked")??;
+            let Some(environment) = environment else {
+                return if parts.rust {
+                    table_checks(root, &mut |s| eprintln!("{s}"))
+                } else {
+                    Ok(())
+                };
+            };
+            let venv = environment
+                .join()
+                .map_err(|_| "making the Python environment panicked")??;
+            let wheel = install_wheel(root, &venv)?;
+            python_tests(root, &venv, &wheel)
+        })();
+        let Some(checks) = checks else {
+            return outcome;
+        };
+        if outcome.is_err() {
+            // the run has failed: no need to wait for the checks
+            abandon.store(true, Ordering::Relaxed);
+        } else if !checks.is_finished() {
+            eprintln!("(waiting for the tables' checks)");
         }
-        python
+        let checked = checks.join();
+        let kept = std::mem::take(&mut *lines.lock().unwrap_or_else(|e| e.into_inner()));
+        kept.iter().for_each(|l| eprintln!("{l}"));
+        outcome?;
+        checked.map_err(|_| "the tables' checks panicked")?
     })
 }
 
@@ -195,17 +203,77 @@ fn table_checks(root: &Path, say: &mut dyn FnMut(String)) -> Result<(), Error> {
     crate::restitution_table::run_check(root, say)
 }
 
-/// [`table_checks`] beside pytest: on one thread of their own, so that pytest (one process,
-/// whose array calls use every core) keeps a core; their report kept in `lines`, to be printed
-/// in one piece afterwards instead of between pytest's dots. On both cores the checks had
-/// slowed pytest from 85 s alone to 204 s beside them (a fresh clone, 2026-11-27), so that
-/// pytest, not the checks, ended the run.
-fn table_checks_kept(root: &Path, lines: &std::sync::Mutex<Vec<String>>) -> Result<(), Error> {
-    let mut keep = |s: String| lines.lock().unwrap_or_else(|e| e.into_inner()).push(s);
-    match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
-        Ok(pool) => pool.install(|| table_checks(root, &mut keep)),
-        Err(e) => Err(format!("a thread for the tables' checks: {e}").into()),
+/// Priority of the tables' checks beside the rest of the run (`nice`): low enough that the
+/// builds, the tests and pytest (one process, whose array calls use every core) keep the cores
+/// they ask for, so that the checks take what they leave idle, and both cores once the rest is
+/// done. On both cores at pytest's priority the checks had slowed pytest from 85 s alone to
+/// 204 s beside them (a fresh clone, 2026-11-27); on one thread of their own at its priority
+/// they ended a slow hour's run alone on one core, the other idle.
+const CHECKS_NICENESS: &str = "10";
+
+/// How often the checks' thread looks whether the run has failed elsewhere.
+const CHECKS_POLL: std::time::Duration = std::time::Duration::from_millis(100);
+
+/// [`table_checks`] beside the rest of the run: the `--check` commands of this binary, one
+/// after the other, in processes of their own at [`CHECKS_NICENESS`] (with `nice` where it is
+/// on PATH; at the same priority otherwise), killed when `abandon` is set (the run has failed
+/// elsewhere); their report (what each printed) kept in `lines`, to be printed in one piece
+/// afterwards instead of between the other steps' lines.
+fn table_checks_kept(
+    root: &Path,
+    lines: &std::sync::Mutex<Vec<String>>,
+    abandon: &AtomicBool,
+) -> Result<(), Error> {
+    let keep = |s: &str| {
+        lines
+            .lock()
+            .unwrap_or_else(|e| e.into_inner())
+            .push(s.to_owned())
+    };
+    let exe = std::env::current_exe()?;
+    for part in ["master-table", "restitution-table"] {
+        let mut cmd = if on_path("nice") {
+            let mut c = Command::new("nice");
+            c.args(["-n", CHECKS_NICENESS]).arg(&exe);
+            c
+        } else {
+            Command::new(&exe)
+        };
+        // the report into a file, read when the check ends (a pipe left unread would stall it
+        // once full)
+        let log = root.join("target").join(format!("{part}-check.log"));
+        let file = std::fs::File::create(&log)?;
+        cmd.current_dir(root)
+            .args([part, "--check"])
+            .stdout(file.try_clone()?)
+            .stderr(file);
+        keep(&format!("+ cargo xtask {part} --check"));
+        let mut child = cmd
+            .spawn()
+            .map_err(|e| format!("cannot run `cargo xtask {part} --check`: {e}"))?;
+        let status = loop {
+            if let Some(status) = child.try_wait()? {
+                break status;
+            }
+            if abandon.load(Ordering::Relaxed) {
+                let _ = child.kill();
+                let _ = child.wait();
+                keep(&format!(
+                    "(cargo xtask {part} --check abandoned: the run failed)"
+                ));
+                return Ok(());
+            }
+            std::thread::sleep(CHECKS_POLL);
+        };
+        std::fs::read_to_string(&log)
+            .unwrap_or_default()
+            .lines()
+            .for_each(keep);
+        if !status.success() {
+            return Err(format!("`cargo xtask {part} --check` failed ({status})").into());
+        }
     }
+    Ok(())
 }
 
 /// The virtual environment with the test requirements, DustPy and the site's builders.
