@@ -181,8 +181,11 @@ pub fn run_tests(root: &Path, parts: Parts) -> Result<(), Error> {
         let checked = checks.join();
         let kept = std::mem::take(&mut *lines.lock().unwrap_or_else(|e| e.into_inner()));
         kept.iter().for_each(|l| eprintln!("{l}"));
-        outcome?;
-        checked.map_err(|_| "the tables' checks panicked")?
+        let checked = checked.map_err(|_| "the tables' checks panicked")?;
+        match (outcome, checked) {
+            (Err(run), Err(check)) => Err(format!("{run}; and {check}").into()),
+            (outcome, checked) => outcome.and(checked),
+        }
     })
 }
 
@@ -231,7 +234,13 @@ fn table_checks_kept(
             .push(s.to_owned())
     };
     let exe = std::env::current_exe()?;
+    let logs = root.join("target");
+    std::fs::create_dir_all(&logs)
+        .map_err(|e| format!("cannot create {} for the checks' logs: {e}", logs.display()))?;
     for part in ["master-table", "restitution-table"] {
+        if abandon.load(Ordering::Relaxed) {
+            return Ok(());
+        }
         let mut cmd = if on_path("nice") {
             let mut c = Command::new("nice");
             c.args(["-n", CHECKS_NICENESS]).arg(&exe);
@@ -241,8 +250,9 @@ fn table_checks_kept(
         };
         // the report into a file, read when the check ends (a pipe left unread would stall it
         // once full)
-        let log = root.join("target").join(format!("{part}-check.log"));
-        let file = std::fs::File::create(&log)?;
+        let log = logs.join(format!("{part}-check.log"));
+        let file = std::fs::File::create(&log)
+            .map_err(|e| format!("cannot create {}: {e}", log.display()))?;
         cmd.current_dir(root)
             .args([part, "--check"])
             .stdout(file.try_clone()?)
@@ -252,8 +262,14 @@ fn table_checks_kept(
             .spawn()
             .map_err(|e| format!("cannot run `cargo xtask {part} --check`: {e}"))?;
         let status = loop {
-            if let Some(status) = child.try_wait()? {
-                break status;
+            match child.try_wait() {
+                Ok(Some(status)) => break status,
+                Ok(None) => {}
+                Err(e) => {
+                    let _ = child.kill();
+                    let _ = child.wait();
+                    return Err(format!("waiting for `cargo xtask {part} --check`: {e}").into());
+                }
             }
             if abandon.load(Ordering::Relaxed) {
                 let _ = child.kill();
