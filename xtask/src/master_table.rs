@@ -24,8 +24,8 @@ use thresholds::master::{ends_to_text, table_to_text};
 /// `--check` recomputes every this-many-th node of each table (95-135 of its 48 000-67 000
 /// values): a change of the model moves them all, so a sample finds it. 250 (190-270 a table)
 /// took 60 s of the 147 s of `--check` once the tables had grown; this and
-/// [`CHECK_LEVELS_EVERY`] keep the checks, beside pytest in `cargo xtask test`, about as long as
-/// pytest (`docs/performance.md`, "Build time").
+/// [`CHECK_LEVELS_EVERY`] keep the checks, which `cargo xtask test` runs beside its other steps
+/// at a lower priority, within what those leave idle (`docs/performance.md`, "Build time").
 pub const CHECK_EVERY: usize = 500;
 
 /// `--check` checks beyond their ends every this-many-th row that is not monotone in each table,

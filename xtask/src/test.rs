@@ -1,10 +1,11 @@
 //! `cargo xtask test`: every test of the project, Rust and Python, in one command on a fresh
 //! machine.
 //!
-//! 1. `cargo test --workspace` (which also builds the `stickiness` binary), then
+//! 1. `cargo test --workspace` (which also builds the `stickiness` binary) and
 //!    `cargo xtask master-table --check` and `cargo xtask restitution-table --check` (a sample
-//!    of the tables' values recomputed; beside everything else when steps 2-5 run, at a lower
-//!    priority, their report printed after them in one piece);
+//!    of the tables' values recomputed): after `cargo test` when only the Rust part runs; with
+//!    steps 2-5, from the start beside all of them at a lower priority, their report printed
+//!    after them in one piece;
 //! 2. made in a thread while step 1 runs (most of it waits on downloads): a virtual
 //!    environment under `target/venv` with the Python test dependencies, DustPy for the
 //!    coupling tests (its PyPI release is a source distribution built with meson and f2py, so
