@@ -3,8 +3,10 @@
 //!
 //! 1. `cargo build -p cli`: the `stickiness` binary, whose `--help` of every subcommand the CLI
 //!    reference page is generated from at build time (so it cannot drift);
-//! 2. `cargo doc --no-deps --workspace` with `RUSTDOCFLAGS="-D warnings"` (a broken intra-doc
-//!    link fails), copied into `target/site/rust/`;
+//! 2. the Rust API: `rustdoc` on each workspace crate against the test build's libraries, as
+//!    `cargo doc --no-deps --workspace` would with `RUSTDOCFLAGS="-D warnings"` (a broken
+//!    intra-doc link fails; [`crate::rustdoc`], `cargo doc` itself where that cannot be set
+//!    up), copied into `target/site/rust/`;
 //! 3. the Sphinx tools ([`DOCS_REQUIREMENTS`]) in the test command's environment `target/venv`,
 //!    and the package itself (its wheel on the dev profile, as `cargo xtask test` installs it),
 //!    whose docstrings the API reference renders;
@@ -53,43 +55,94 @@ fn rustdoc(root: &Path) -> Command {
 }
 
 /// The Rust API's documentation building in the background (its output in
-/// `target/rustdoc.log`), for `cargo xtask test` to overlap it with pytest: on a fresh clone
-/// rustdoc first compiles every dependency in check mode (about 2.5 minutes on 2 cores), which
-/// the test build does not share.
+/// `target/rustdoc.log`), for `cargo xtask test` to overlap it with pytest: `rustdoc` on each
+/// workspace crate against the libraries of the test build ([`crate::rustdoc`]), or, where that
+/// cannot be set up or fails, `cargo doc --no-deps --workspace`, which first compiles every
+/// dependency again in check mode (about 150 s of CPU on a fresh clone) and whose verdict then
+/// counts.
 pub struct RustDoc {
-    child: std::process::Child,
+    worker: std::thread::JoinHandle<Result<(), Error>>,
     log: PathBuf,
 }
 
 impl RustDoc {
-    /// Starts `cargo doc`; nothing else may run cargo until [`RustDoc::wait`] (the build
-    /// directory's lock would serialise them).
+    /// Starts it; nothing else may run cargo until [`RustDoc::wait`] (the build directory's
+    /// lock would serialise them).
     pub fn start(root: &Path) -> Result<RustDoc, Error> {
         let log = root.join("target").join("rustdoc.log");
         let file = std::fs::File::create(&log)?;
         eprintln!(
-            "+ cargo doc --no-deps --workspace (in the background, log: {})",
+            "+ rustdoc of the workspace's crates (in the background, log: {})",
             log.display()
         );
-        let child = rustdoc(root)
-            .stdout(file.try_clone()?)
-            .stderr(file)
-            .spawn()
-            .map_err(|e| format!("cannot start cargo doc: {e}"))?;
-        Ok(RustDoc { child, log })
+        let root = root.to_path_buf();
+        let worker = std::thread::spawn(move || document(&root, &file));
+        Ok(RustDoc { worker, log })
     }
 
     /// Waits for it; an error with its log when it failed.
-    pub fn wait(mut self) -> Result<(), Error> {
-        let status = self.child.wait()?;
-        if status.success() {
-            return Ok(());
+    pub fn wait(self) -> Result<(), Error> {
+        let done = self
+            .worker
+            .join()
+            .map_err(|_| "the rustdoc thread panicked")?;
+        done.map_err(|e| {
+            let log = std::fs::read_to_string(&self.log).unwrap_or_default();
+            format!("{e}:\n{log}").into()
+        })
+    }
+}
+
+/// Documents the workspace into `root/target/doc`, the output of every command into `log`.
+fn document(root: &Path, log: &std::fs::File) -> Result<(), Error> {
+    use std::io::Write;
+    let start = std::time::Instant::now();
+    let quick = crate::rustdoc::commands(root).and_then(|commands| {
+        let n = commands.len();
+        for mut cmd in commands {
+            let one = std::time::Instant::now();
+            let status = cmd
+                .stdout(log.try_clone()?)
+                .stderr(log.try_clone()?)
+                .status()
+                .map_err(|e| format!("cannot run rustdoc: {e}"))?;
+            if !status.success() {
+                return Err(format!("{cmd:?} failed ({status})").into());
+            }
+            let name = cmd.get_args().skip_while(|a| *a != "--crate-name").nth(1);
+            let mut out = log.try_clone()?;
+            writeln!(
+                out,
+                "rustdoc {}: {:.1} s",
+                name.unwrap_or_default().to_string_lossy(),
+                one.elapsed().as_secs_f64()
+            )?;
         }
-        let log = std::fs::read_to_string(&self.log).unwrap_or_default();
-        Err(
-            format!("`cargo doc --no-deps --workspace` (-D warnings) failed ({status}):\n{log}")
-                .into(),
-        )
+        let mut out = log.try_clone()?;
+        writeln!(
+            out,
+            "rustdoc: {n} crates documented against the build's libraries in {:.0} s",
+            start.elapsed().as_secs_f64()
+        )?;
+        Ok(())
+    });
+    let Err(why) = quick else {
+        return Ok(());
+    };
+    let mut out = log.try_clone()?;
+    writeln!(
+        out,
+        "\nrustdoc on the test build's libraries: {why}\nnow cargo doc:"
+    )?;
+    let status = rustdoc(root)
+        .stdout(log.try_clone()?)
+        .stderr(log.try_clone()?)
+        .status()
+        .map_err(|e| format!("cannot start cargo doc: {e}"))?;
+    if status.success() {
+        Ok(())
+    } else {
+        Err(format!("`cargo doc --no-deps --workspace` (-D warnings) failed ({status})").into())
     }
 }
 
@@ -103,10 +156,9 @@ pub fn build(
     let start = std::time::Instant::now();
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let target = root.join("target");
-    match rustdoc_started {
-        Some(started) => started.wait()?,
-        None => run(&mut rustdoc(root))?,
-    }
+    rustdoc_started
+        .map_or_else(|| RustDoc::start(root), Ok)?
+        .wait()?;
     run(Command::new(&cargo)
         .current_dir(root)
         .args(["build", "-p", "cli"]))?;

@@ -11,6 +11,7 @@ pub mod figures;
 pub mod master_table;
 pub mod python;
 pub mod restitution_table;
+pub mod rustdoc;
 pub mod table;
 pub mod test;
 pub mod wheel;

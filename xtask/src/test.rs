@@ -321,7 +321,8 @@ fn install_wheel(root: &Path, venv: &Venv) -> Result<std::path::PathBuf, Error> 
 
 /// pytest on the installed `wheel`, the docstrings' examples and the site.
 fn python_tests(root: &Path, venv: &Venv, wheel: &Path) -> Result<(), Error> {
-    // the Rust API's docs build alongside pytest (no cargo runs until the docs step)
+    // the Rust API's docs build alongside pytest (rustdoc against the test build's libraries;
+    // no cargo runs until the docs step)
     let rustdoc = crate::docs::RustDoc::start(root)?;
     let cli = root.join("target").join("debug").join("stickiness");
     run(venv
