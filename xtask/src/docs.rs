@@ -1,21 +1,21 @@
 //! `cargo xtask docs`: the documentation site, built into `target/site/` (open
 //! `target/site/index.html`).
 //!
-//! 1. `cargo build -p cli`: the `stickiness` binary, whose `--help` of every subcommand the CLI
-//!    reference page is generated from at build time (so it cannot drift);
-//! 2. the Rust API: `rustdoc` on each workspace crate against the test build's libraries, as
-//!    `cargo doc --no-deps --workspace` would with `RUSTDOCFLAGS="-D warnings"` (a broken
-//!    intra-doc link fails; [`crate::rustdoc`], `cargo doc` itself where that cannot be set
-//!    up), copied into `target/site/rust/`;
-//! 3. the Sphinx tools ([`DOCS_REQUIREMENTS`]) in the test command's environment `target/venv`,
-//!    and the package itself (its wheel on the dev profile, as `cargo xtask test` installs it),
-//!    whose docstrings the API reference renders;
+//! 1. the package itself, its wheel on the dev profile (as `cargo xtask test` installs it), whose
+//!    docstrings the API reference renders, in the test command's environment `target/venv`;
+//! 2. the Rust API: `rustdoc` on each workspace crate against the test build's libraries (and
+//!    the wheel's PyO3), as `cargo doc --no-deps --workspace` would with `RUSTDOCFLAGS="-D
+//!    warnings"` (a broken intra-doc link fails; [`crate::rustdoc`], `cargo doc` itself where
+//!    that cannot be set up), copied into `target/site/rust/`;
+//! 3. `cargo build -p cli`: the `stickiness` binary, whose `--help` of every subcommand the CLI
+//!    reference page is generated from at build time (so it cannot drift), and the Sphinx tools
+//!    ([`DOCS_REQUIREMENTS`]);
 //! 4. `sphinx-build` of `docs/site/` with warnings as errors (`-W --keep-going`), nitpicky (every
 //!    cross-reference must resolve), from a fresh environment (`-E`, so that a warning of an
 //!    unchanged page is never hidden by the cache);
 //! 5. a check that every link of the site into the Rust API lands on a page.
 //!
-//! `cargo xtask test` runs steps 1-5 after the Python tests, on the wheel it has just installed,
+//! `cargo xtask test` runs steps 2-5 after the Python tests, on the wheel it has just installed,
 //! with step 2 started before pytest and run alongside it ([`RustDoc`]).
 
 use crate::python::Venv;
@@ -156,20 +156,21 @@ pub fn build(
     let start = std::time::Instant::now();
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let target = root.join("target");
-    rustdoc_started
-        .map_or_else(|| RustDoc::start(root), Ok)?
-        .wait()?;
-    run(Command::new(&cargo)
-        .current_dir(root)
-        .args(["build", "-p", "cli"]))?;
     let venv = Venv::open(root)?;
-    venv.pip(root, DOCS_REQUIREMENTS)?;
+    // the wheel first: the Rust API's pages of the Python crate read the PyO3 its build made
     if package == Package::Install {
         let wheel = crate::wheel::build(root, "dev")?;
         let wheel_arg = wheel.to_string_lossy().into_owned();
         venv.pip(root, &["--force-reinstall", "--no-deps", &wheel_arg])?;
         venv.pip(root, &[&wheel_arg])?; // its dependencies, when missing
     }
+    rustdoc_started
+        .map_or_else(|| RustDoc::start(root), Ok)?
+        .wait()?;
+    run(Command::new(&cargo)
+        .current_dir(root)
+        .args(["build", "-p", "cli"]))?;
+    venv.pip(root, DOCS_REQUIREMENTS)?;
     let site = target.join("site");
     run(venv
         .command(root)

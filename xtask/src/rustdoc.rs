@@ -7,10 +7,10 @@
 //! wall time on two cores. Nearly every library those pages need exists once `cargo test
 //! --workspace` has built: [`commands`] runs `rustdoc` on each workspace crate, as `cargo doc`
 //! would (the same edition, crate types, features, build-script output, workspace lints and
-//! `-D warnings`), with `--extern` paths to the libraries `cargo build --workspace
-//! --message-format=json` names (the test build's, shared through `crates/workspace-hack`; only
-//! the Python crate's PyO3 is compiled anew), crate by crate in dependency order so that each
-//! links to the pages of the crates below it.
+//! `-D warnings`), with `--extern` paths to the libraries `cargo test --workspace --no-run
+//! --message-format=json` names (nothing is rebuilt after the test build; PyO3 and numpy, which
+//! no test needs, as the wheel's build left them), crate by crate in dependency order so that
+//! each links to the pages of the crates below it.
 //!
 //! Where a package was built twice (for a build script, with the build-override profile, and for
 //! the crates that use it) the library a crate was compiled against is the one whose file-name
@@ -34,14 +34,18 @@ struct Built {
 }
 
 /// The `rustdoc` commands that document the workspace's crates into `root/target/doc`, in
-/// dependency order; runs `cargo build --workspace` and `cargo metadata` to find them. After
-/// the test build that build compiles only what no test needs: PyO3 and numpy for the Python
-/// crate, whose library no test builds (about 10 s of CPU, once).
+/// dependency order; runs `cargo test --workspace --no-run` (nothing to do after the test
+/// build) and `cargo metadata` to find them. The libraries no test needs (PyO3 and numpy, for
+/// the Python crate, whose library no test builds) are the newest in the build's `deps`
+/// directory: the wheel's, built just before. (`cargo build --workspace` would name them too,
+/// but it compiles them again, with another environment than maturin's, and the next wheel
+/// build again after it.)
 pub fn commands(root: &Path) -> Result<Vec<Command>, Error> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let built = built(&capture(Command::new(&cargo).current_dir(root).args([
-        "build",
+        "test",
         "--workspace",
+        "--no-run",
         "--message-format=json",
     ]))?)?;
     let metadata: Value =
@@ -92,7 +96,12 @@ pub fn commands(root: &Path) -> Result<Vec<Command>, Error> {
         });
         let mut externs = Vec::new();
         for &(name, dep) in deps.get(id).map_or(&[][..], |d| &d[..]) {
-            let lib = pick(name, built.get(dep).map_or(&[][..], |b| &b.libs), own_rmeta)?;
+            let lib = match built.get(dep).filter(|b| !b.libs.is_empty()) {
+                Some(b) => pick(name, &b.libs, own_rmeta)?,
+                // a library no test needs (PyO3 for the Python crate): the last build of it,
+                // the wheel's
+                None => newest(&deps_dir, lib_target(packages.get(dep))?)?,
+            };
             externs.push(format!("{name}={}", lib.display()));
         }
         for target in array(package, "targets")? {
@@ -224,6 +233,43 @@ fn pick(
             }
         }
     }
+}
+
+/// The name of the library target of `package` (`-` as `_`).
+fn lib_target(package: Option<&&Value>) -> Result<String, Error> {
+    let package = package.ok_or("a dependency missing from cargo's metadata")?;
+    package["targets"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .find(|t| {
+            strings(&t["kind"])
+                .iter()
+                .any(|k| k.ends_with("lib") || k == "proc-macro")
+        })
+        .and_then(|t| t["name"].as_str())
+        .map(|n| n.replace('-', "_"))
+        .ok_or_else(|| format!("`{}` has no library", package["name"]).into())
+}
+
+/// The most recently written `lib<name>-<hash>.rlib` (or a proc macro's `.so`) in `deps`.
+fn newest(deps: &Path, name: String) -> Result<PathBuf, Error> {
+    let prefix = format!("lib{name}-");
+    std::fs::read_dir(deps)?
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| {
+            let file = p.file_name().and_then(|f| f.to_str()).unwrap_or("");
+            // lib<name>-<16 hexadecimal digits>.rlib: not another crate's named alike
+            let hash = file.strip_prefix(&prefix).and_then(|r| r.split_once('.'));
+            matches!(ext(p), "rlib" | "so")
+                && hash
+                    .is_some_and(|(h, _)| h.len() == 16 && h.bytes().all(|b| b.is_ascii_hexdigit()))
+        })
+        .filter_map(|p| Some((std::fs::metadata(&p).ok()?.modified().ok()?, p)))
+        .max()
+        .map(|(_, p)| p)
+        .ok_or_else(|| format!("no library of `{name}` in {}", deps.display()).into())
 }
 
 /// `-<hash>` of `lib<name>-<hash>.<ext>` (cargo's 16 hexadecimal digits).
