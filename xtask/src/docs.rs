@@ -101,22 +101,24 @@ fn document(root: &Path, log: &std::fs::File) -> Result<(), Error> {
         let n = commands.len();
         for mut cmd in commands {
             let one = std::time::Instant::now();
+            let name = cmd
+                .get_args()
+                .skip_while(|a| *a != "--crate-name")
+                .nth(1)
+                .unwrap_or_default()
+                .to_string_lossy()
+                .into_owned();
             let status = cmd
                 .stdout(log.try_clone()?)
                 .stderr(log.try_clone()?)
                 .status()
                 .map_err(|e| format!("cannot run rustdoc: {e}"))?;
-            if !status.success() {
-                return Err(format!("{cmd:?} failed ({status})").into());
-            }
-            let name = cmd.get_args().skip_while(|a| *a != "--crate-name").nth(1);
             let mut out = log.try_clone()?;
-            writeln!(
-                out,
-                "rustdoc {}: {:.1} s",
-                name.unwrap_or_default().to_string_lossy(),
-                one.elapsed().as_secs_f64()
-            )?;
+            if !status.success() {
+                writeln!(out, "the command: {cmd:?}")?;
+                return Err(format!("rustdoc of `{name}` failed ({status})").into());
+            }
+            writeln!(out, "rustdoc {name}: {:.1} s", one.elapsed().as_secs_f64())?;
         }
         let mut out = log.try_clone()?;
         writeln!(
@@ -134,6 +136,10 @@ fn document(root: &Path, log: &std::fs::File) -> Result<(), Error> {
         out,
         "\nrustdoc on the test build's libraries: {why}\nnow cargo doc:"
     )?;
+    eprintln!(
+        "rustdoc against the test build's libraries did not go through ({why}); cargo doc \
+         instead, which checks every dependency first (log: target/rustdoc.log)"
+    );
     let status = rustdoc(root)
         .stdout(log.try_clone()?)
         .stderr(log.try_clone()?)

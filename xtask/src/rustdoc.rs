@@ -525,4 +525,29 @@ mod tests {
         );
         let _ = std::fs::remove_dir_all(&dir);
     }
+
+    /// A library no test builds: the newest `lib<name>-<hash>.rlib`, not another crate's whose
+    /// name starts alike.
+    #[test]
+    fn the_newest_build_of_a_library() {
+        let dir = std::env::temp_dir().join(format!("xtask-newest-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap_or_default();
+        let t0 = std::time::SystemTime::UNIX_EPOCH + std::time::Duration::from_secs(1_000_000);
+        for (file, age) in [
+            ("libpyo3-00000000000000aa.rlib", 3),
+            ("libpyo3-00000000000000bb.rlib", 2),
+            ("libpyo3-00000000000000cc.rmeta", 1),
+            ("libpyo3_ffi-00000000000000dd.rlib", 0),
+        ] {
+            let f = std::fs::File::create(dir.join(file));
+            let when = t0 - std::time::Duration::from_secs(age);
+            assert!(f.and_then(|f| f.set_modified(when)).is_ok());
+        }
+        assert_eq!(
+            newest(&dir, "pyo3".into()).ok(),
+            Some(dir.join("libpyo3-00000000000000bb.rlib"))
+        );
+        assert!(newest(&dir, "numpy".into()).is_err());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
 }
