@@ -58,16 +58,19 @@ fn rustdoc(root: &Path) -> Command {
 /// `target/rustdoc.log`), for `cargo xtask test` to overlap it with pytest: `rustdoc` on each
 /// workspace crate against the libraries of the test build ([`crate::rustdoc`]), or, where that
 /// cannot be set up or fails, `cargo doc --no-deps --workspace`, which first compiles every
-/// dependency again in check mode (about 150 s of CPU on a fresh clone) and whose verdict then
-/// counts.
+/// dependency again in check mode (75-150 s of CPU on a fresh clone) and whose verdict then
+/// counts (so a doc warning costs that check before it fails the build).
 pub struct RustDoc {
     worker: std::thread::JoinHandle<Result<(), Error>>,
     log: PathBuf,
 }
 
 impl RustDoc {
-    /// Starts it; nothing else may run cargo until [`RustDoc::wait`] (the build directory's
-    /// lock would serialise them).
+    /// Starts it: the commands are found here, before anything else runs (the `cargo test
+    /// --no-run` that names the libraries would relink a binary pytest runs, were anything out
+    /// of date), and run in the background; nothing else may run cargo until
+    /// [`RustDoc::wait`] (the build directory's lock would serialise them, and the fallback to
+    /// `cargo doc` may take it).
     pub fn start(root: &Path) -> Result<RustDoc, Error> {
         let log = root.join("target").join("rustdoc.log");
         let file = std::fs::File::create(&log)?;
@@ -75,8 +78,9 @@ impl RustDoc {
             "+ rustdoc of the workspace's crates (in the background, log: {})",
             log.display()
         );
+        let commands = crate::rustdoc::commands(root, &file);
         let root = root.to_path_buf();
-        let worker = std::thread::spawn(move || document(&root, &file));
+        let worker = std::thread::spawn(move || document(&root, &file, commands));
         Ok(RustDoc { worker, log })
     }
 
@@ -93,21 +97,20 @@ impl RustDoc {
     }
 }
 
-/// Documents the workspace into `root/target/doc`, the output of every command into `log`.
-fn document(root: &Path, log: &std::fs::File) -> Result<(), Error> {
+/// Documents the workspace into `target/doc` with `commands` (each with its crate's name), the
+/// output of every command into `log`; with `cargo doc` where they could not be found or one
+/// failed.
+fn document(
+    root: &Path,
+    log: &std::fs::File,
+    commands: Result<Vec<(String, Command)>, Error>,
+) -> Result<(), Error> {
     use std::io::Write;
     let start = std::time::Instant::now();
-    let quick = crate::rustdoc::commands(root).and_then(|commands| {
+    let quick = commands.and_then(|commands| {
         let n = commands.len();
-        for mut cmd in commands {
+        for (name, mut cmd) in commands {
             let one = std::time::Instant::now();
-            let name = cmd
-                .get_args()
-                .skip_while(|a| *a != "--crate-name")
-                .nth(1)
-                .unwrap_or_default()
-                .to_string_lossy()
-                .into_owned();
             let status = cmd
                 .stdout(log.try_clone()?)
                 .stderr(log.try_clone()?)
@@ -137,8 +140,9 @@ fn document(root: &Path, log: &std::fs::File) -> Result<(), Error> {
         "\nrustdoc on the test build's libraries: {why}\nnow cargo doc:"
     )?;
     eprintln!(
-        "rustdoc against the test build's libraries did not go through ({why}); cargo doc \
-         instead, which checks every dependency first (log: target/rustdoc.log)"
+        "rustdoc against the test build's libraries: {why} (a doc warning, or libraries that \
+         could not be found or do not fit together); confirming with cargo doc, which checks \
+         every dependency first (log: target/rustdoc.log)"
     );
     let status = rustdoc(root)
         .stdout(log.try_clone()?)
