@@ -118,7 +118,8 @@ enum Command {
         python_only: bool,
     },
     /// Build the documentation site (Sphinx: user guide, Python and CLI references, the
-    /// notebook; the Rust API from `cargo doc`) into target/site/, warnings as errors.
+    /// notebook; the Rust API by rustdoc against the test build's libraries, as `cargo doc`
+    /// makes it) into target/site/, warnings as errors.
     Docs,
 }
 
