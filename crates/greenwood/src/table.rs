@@ -17,8 +17,8 @@
 //! The solvers call [`CrackLaw::speed_unchecked`] millions of times, so each branch also keeps a
 //! second representation of the same table: |v| as cubic Hermite cells in `r = e^zeta`, 128 per
 //! octave of r, indexed by the bits of r (no logarithm, no exponential) and filled from the table
-//! the first time a trajectory enters an octave (about 0.01 ms each). It follows the table to
-//! 1e-9 relative (`FAST_BITS`).
+//! eight cells at a time, the first time a trajectory enters them (`FAST_BLOCK_BITS`). It follows
+//! the table to 1e-9 relative (`FAST_BITS`).
 //! Outside the table (alpha beyond its range) w is extrapolated linearly, which keeps v and its
 //! derivative finite, monotone and of the right sign up to the bounds.
 
@@ -165,22 +165,40 @@ const FAST_MIN_EXP: i32 = -48;
 /// k or 1/k, beyond the start and the end of every contact); larger `r` goes through the table.
 const FAST_MAX_EXP: i32 = 24;
 
+/// Cells filled at once: the first evaluation in a block of `2^FAST_BLOCK_BITS` = 8 cells
+/// fills that block from the table (9 edges, 256 bytes of its own). A lone collision with a
+/// law of its own (the restitution's ODE fallback at a random k) touches few of an octave's 128
+/// cells, and whole octaves (4 KB each) made its law a third of its cost: 1343 such collisions
+/// took 1.64 s with whole octaves, 1.47 s with blocks of eight (1.46 s with two cells, 1.50 s
+/// with sixteen) and 1.10 s with warm laws; a search, which shares its law, 0.4 % more
+/// instructions (docs/performance.md, "The crack law of each k"). The cells' values do not
+/// depend on how many are filled at once.
+const FAST_BLOCK_BITS: u32 = 3;
+/// Cells a block holds.
+const FAST_BLOCK: usize = 1 << FAST_BLOCK_BITS;
+/// Blocks an octave holds.
+const FAST_BLOCKS_PER_OCTAVE: usize = 1 << (FAST_BITS - FAST_BLOCK_BITS);
+
+/// The coefficients `[c0, c1, c2, c3]` of |v| in each cell of a block, in the cell's local
+/// variable `t = (r - r0) / h` in [0, 1).
+type Block = [[f64; 4]; FAST_BLOCK];
+
 /// A second, faster representation of one branch: |v| as a cubic Hermite interpolant in
 /// `r = |beta - 1| / (distance of beta to its bound)` (so `zeta = ln r`) on cells uniform within
 /// each octave of r, found from the bits of r: no logarithm, no exponential. Its nodes are values
-/// and slopes of the table itself, computed the first time a trajectory enters an octave.
+/// and slopes of the table itself, computed the first time a trajectory enters a block of cells.
 #[derive(Debug)]
 struct FastBranch {
-    /// Per octave, `2^FAST_BITS` cells of coefficients `[c0, c1, c2, c3]` of |v| in the cell's
-    /// local variable `t = (r - r0) / h` in [0, 1).
-    octaves: Vec<OnceLock<Box<[[f64; 4]]>>>,
+    /// Per block of [`FAST_BLOCK`] cells ([`FAST_BLOCKS_PER_OCTAVE`] an octave, octave by
+    /// octave), its cells, filled on first use.
+    blocks: Vec<OnceLock<Box<Block>>>,
 }
 
 impl FastBranch {
     fn new() -> Self {
-        let n = (FAST_MAX_EXP - FAST_MIN_EXP) as usize;
+        let n = (FAST_MAX_EXP - FAST_MIN_EXP) as usize * FAST_BLOCKS_PER_OCTAVE;
         Self {
-            octaves: (0..n).map(|_| OnceLock::new()).collect(),
+            blocks: (0..n).map(|_| OnceLock::new()).collect(),
         }
     }
 
@@ -190,48 +208,64 @@ impl FastBranch {
         let bits = r.to_bits();
         // biased exponent of r; r > 0 and finite here (NaN and infinities fall outside)
         let biased = (bits >> 52) as i64;
-        let octave = biased - 1023 - FAST_MIN_EXP as i64;
-        let cells = self.octaves.get(usize::try_from(octave).ok()?)?;
-        let cells = cells.get_or_init(|| Self::octave(biased, table));
+        let octave = usize::try_from(biased - 1023 - FAST_MIN_EXP as i64).ok()?;
         let shift = 52 - FAST_BITS;
         let j = ((bits >> shift) & ((1 << FAST_BITS) - 1)) as usize;
+        let b = j >> FAST_BLOCK_BITS;
+        let block = self.blocks.get(octave * FAST_BLOCKS_PER_OCTAVE + b)?;
+        let cells = match block.get() {
+            Some(cells) => cells,
+            None => Self::fill(block, biased, b << FAST_BLOCK_BITS, table),
+        };
         // r0: r with the mantissa bits below the cell index cleared; h = 2^(e - FAST_BITS)
         let r0 = f64::from_bits((bits >> shift) << shift);
         let inv_h = f64::from_bits(((2046 - biased + FAST_BITS as i64) as u64) << 52);
         let t = (r - r0) * inv_h;
-        let [c0, c1, c2, c3] = cells[j];
+        let [c0, c1, c2, c3] = cells[j & (FAST_BLOCK - 1)];
         let f = c0 + t * (c1 + t * (c2 + t * c3));
         let df_dt = c1 + t * (2.0 * c2 + 3.0 * t * c3);
         Some((f, df_dt * inv_h))
     }
 
-    /// The cells of the octave with biased exponent `biased`, from the table's values and slopes
-    /// at the cell edges.
-    fn octave(biased: i64, table: &BranchTable) -> Box<[[f64; 4]]> {
+    /// `block` filled on its first visit (see [`FastBranch::block`]).
+    #[cold]
+    #[inline(never)]
+    fn fill<'a>(
+        block: &'a OnceLock<Box<Block>>,
+        biased: i64,
+        first: usize,
+        table: &BranchTable,
+    ) -> &'a Block {
+        block.get_or_init(|| Box::new(Self::block(biased, first, table)))
+    }
+
+    /// The cells `first .. first + FAST_BLOCK` of the octave with biased exponent `biased`,
+    /// from the table's values and slopes at the cell edges.
+    fn block(biased: i64, first: usize, table: &BranchTable) -> Block {
         let n = 1usize << FAST_BITS;
         let base = f64::from_bits((biased as u64) << 52);
         let h = base / n as f64;
         // |v| and d|v|/dt (t in cell units) at each edge
-        let edges: Vec<(f64, f64)> = (0..=n)
-            .map(|j| {
-                let r = base + j as f64 * h;
-                let (w, dw) = table.eval(r.ln());
-                let f = w.exp();
-                (f, f * dw / r * h)
-            })
-            .collect();
-        edges
-            .windows(2)
-            .map(|e| {
-                let ((f0, d0), (f1, d1)) = (e[0], e[1]);
-                [
-                    f0,
-                    d0,
-                    3.0 * (f1 - f0) - 2.0 * d0 - d1,
-                    2.0 * (f0 - f1) + d0 + d1,
-                ]
-            })
-            .collect()
+        let edge = |j: usize| {
+            let r = base + j as f64 * h;
+            let (w, dw) = table.eval(r.ln());
+            let f = w.exp();
+            (f, f * dw / r * h)
+        };
+        let mut cells = [[0.0; 4]; FAST_BLOCK];
+        let mut left = edge(first);
+        for (q, cell) in cells.iter_mut().enumerate() {
+            let right = edge(first + q + 1);
+            let ((f0, d0), (f1, d1)) = (left, right);
+            *cell = [
+                f0,
+                d0,
+                3.0 * (f1 - f0) - 2.0 * d0 - d1,
+                2.0 * (f0 - f1) + d0 + d1,
+            ];
+            left = right;
+        }
+        cells
     }
 }
 
