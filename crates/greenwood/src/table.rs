@@ -56,18 +56,17 @@ struct BranchTable {
     /// `newton[s]`: the Newton coefficients of the stencil of nodes `s .. s + STENCIL`, the
     /// divided differences `f[zeta_s .. zeta_(s+j)]`, `j < STENCIL`.
     newton: Vec<[f64; STENCIL]>,
-    /// First node of each stencil.
-    start: Vec<usize>,
-    /// `bucket[b]`: the interval containing the left end of bucket `b`.
-    bucket: Vec<usize>,
+    /// `bucket[b]`: the interval containing the left end of bucket `b` (a table has a few
+    /// thousand intervals: `u32` halves the index, which a law built for one collision fills).
+    bucket: Vec<u32>,
     bucket_origin: f64,
     bucket_inv_width: f64,
 }
 
 impl BranchTable {
-    fn from_points(mut points: Vec<(f64, f64)>) -> Self {
-        points.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let (zeta, w): (Vec<f64>, Vec<f64>) = points.into_iter().unzip();
+    /// The table through the nodes `(zeta, w)`, sorted by increasing zeta (what
+    /// [`BranchTable::from_points`] sorts them into).
+    fn from_sorted(zeta: Vec<f64>, w: Vec<f64>) -> Self {
         let n = zeta.len();
         let intervals = n - 1;
         // the Newton coefficients of every stencil: the divided differences f[zeta_a ..
@@ -85,12 +84,6 @@ impl BranchTable {
             }
         }
         newton.truncate(stencils);
-        // the stencil of interval i: centred on it (nodes i-2 ..= i+3), shifted inside the table
-        let start: Vec<usize> = (0..intervals)
-            .map(|i| {
-                (i as isize + 1 - (STENCIL / 2) as isize).clamp(0, (n - STENCIL) as isize) as usize
-            })
-            .collect();
         // buckets no wider than the narrowest interval: at most one interval boundary per bucket
         let min_gap = zeta
             .windows(2)
@@ -106,17 +99,42 @@ impl BranchTable {
             while i + 1 < intervals && zeta[i + 1] <= left {
                 i += 1;
             }
-            bucket.push(i);
+            // at most 2^20 buckets and a few thousand intervals: i fits
+            bucket.push(i as u32);
         }
         Self {
             bucket_origin: zeta[0],
             zeta,
             w,
             newton,
-            start,
             bucket,
             bucket_inv_width,
         }
+    }
+
+    /// The table through the nodes `(zeta[i], w[i])`, given in decreasing alpha: as they come
+    /// if zeta increases strictly (no sort, no copy: a law built for one collision spends a
+    /// third of its table on page faults of fresh memory), else sorted by zeta as
+    /// [`BranchTable::from_points`] sorts the nodes in increasing alpha, stably (the same table).
+    fn from_nodes(zeta: Vec<f64>, w: Vec<f64>) -> Self {
+        if zeta.windows(2).all(|p| p[0] < p[1]) {
+            Self::from_sorted(zeta, w)
+        } else {
+            Self::from_points(zeta.into_iter().zip(w).rev().collect())
+        }
+    }
+
+    /// The table through `points` `(zeta, w)` in any order (sorted by zeta first, stably).
+    fn from_points(mut points: Vec<(f64, f64)>) -> Self {
+        points.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let (zeta, w): (Vec<f64>, Vec<f64>) = points.into_iter().unzip();
+        Self::from_sorted(zeta, w)
+    }
+
+    /// The first node of the stencil of interval `i` of `n` nodes: centred on it (nodes i-2 ..=
+    /// i+3), shifted inside the table.
+    fn stencil_start(i: usize, n: usize) -> usize {
+        (i as isize + 1 - (STENCIL / 2) as isize).clamp(0, (n - STENCIL) as isize) as usize
     }
 
     /// `(w, dw/dzeta)` at `z`.
@@ -133,11 +151,11 @@ impl BranchTable {
         }
         let b = (((z - self.bucket_origin) * self.bucket_inv_width) as usize)
             .min(self.bucket.len() - 1);
-        let mut i = self.bucket[b];
+        let mut i = self.bucket[b] as usize;
         while i + 1 < last && self.zeta[i + 1] <= z {
             i += 1;
         }
-        let s = self.start[i];
+        let s = Self::stencil_start(i, n);
         let dd = &self.newton[s];
         let xs = &self.zeta[s..s + STENCIL];
         // Horner on the Newton form, carrying the derivative along
@@ -296,23 +314,25 @@ struct Tables {
 impl Tables {
     /// The tables of `k` (checked: 0 < k < 1).
     fn new(k: f64) -> Self {
-        let mut closing = Vec::with_capacity(J_NODES.len());
-        let mut opening = Vec::with_capacity(J_NODES.len());
-        for &[alpha, j3, one_minus_j3, k_log] in &J_NODES {
+        let n = J_NODES.len();
+        let mut nodes = [Branch::Closing, Branch::Opening]
+            .map(|branch| (branch, Vec::with_capacity(n), Vec::with_capacity(n)));
+        // zeta falls as alpha grows on both branches, so the nodes taken in decreasing alpha
+        // come sorted by zeta (`BranchTable::from_nodes` makes sure)
+        for &[alpha, j3, one_minus_j3, k_log] in J_NODES.iter().rev() {
             let j = JIntegrals::from_parts(alpha, j3, one_minus_j3, k_log);
-            for (branch, out) in [
-                (Branch::Closing, &mut closing),
-                (Branch::Opening, &mut opening),
-            ] {
+            for (branch, zeta, w) in &mut nodes {
                 // k was checked by `CrackLaw::new`, so every point exists
-                if let Ok(p) = CrackPoint::from_integrals(k, &j, branch) {
-                    out.push((p.zeta(), p.v.abs().ln()));
+                if let Ok(p) = CrackPoint::from_integrals(k, &j, *branch) {
+                    zeta.push(p.zeta());
+                    w.push(p.v.abs().ln());
                 }
             }
         }
+        let [closing, opening] = nodes.map(|(_, zeta, w)| BranchTable::from_nodes(zeta, w));
         Tables {
-            closing: BranchTable::from_points(closing),
-            opening: BranchTable::from_points(opening),
+            closing,
+            opening,
             closing_fast: FastBranch::new(),
             opening_fast: FastBranch::new(),
         }
@@ -449,7 +469,9 @@ impl CrackLaw {
 
 #[cfg(test)]
 mod tests {
-    use super::{CrackLaw, FAST_BITS, FAST_MAX_EXP, FAST_MIN_EXP, J_NODES};
+    use super::{BranchTable, CrackLaw, FAST_BITS, FAST_MAX_EXP, FAST_MIN_EXP, J_NODES};
+    use crate::integrals::JIntegrals;
+    use crate::law::{Branch, CrackPoint};
     use crate::quad::{j3_complement_log_term, node_alpha, node_count};
 
     /// The fast representation reproduces the table it interpolates: |v| within 1e-9 relative
@@ -494,6 +516,31 @@ mod tests {
                 .closing_fast
                 .eval(2f64.powi(FAST_MIN_EXP - 1), &t.closing)
                 .is_none());
+        }
+    }
+
+    /// The nodes taken as they come (in decreasing alpha, already sorted by zeta) build the
+    /// very table that sorting them builds, bit for bit, on both branches and across k.
+    #[test]
+    fn nodes_as_they_come_build_the_sorted_table() {
+        for k in [0.005, 0.01, 0.02, 0.05, 0.3, 0.9] {
+            for branch in [Branch::Closing, Branch::Opening] {
+                // the nodes in increasing alpha, as `Tables::new` once collected them
+                let points: Vec<(f64, f64)> = J_NODES
+                    .iter()
+                    .filter_map(|&[alpha, j3, m, k_log]| {
+                        let j = JIntegrals::from_parts(alpha, j3, m, k_log);
+                        let p = CrackPoint::from_integrals(k, &j, branch).ok()?;
+                        Some((p.zeta(), p.v.abs().ln()))
+                    })
+                    .collect();
+                let sorted = BranchTable::from_points(points.clone());
+                let (zeta, w): (Vec<f64>, Vec<f64>) = points.into_iter().rev().unzip();
+                assert!(zeta.windows(2).all(|p| p[0] < p[1]), "k = {k}: not sorted");
+                let direct = BranchTable::from_nodes(zeta, w);
+                // Debug prints each float's shortest round trip: equal text, equal bits
+                assert_eq!(format!("{direct:?}"), format!("{sorted:?}"), "k = {k}");
+            }
         }
     }
 
