@@ -289,11 +289,11 @@ impl FastBranch {
 
 /// Greenwood's crack law `v(k, beta)` for one k, evaluated by table interpolation.
 ///
-/// Make it once per k and share it: its table is built on the first evaluation (0.09 ms in a
+/// Make it once per k and share it: its table is built on the first evaluation (0.1 ms in a
 /// warm loop, about 0.2 ms among other work: the quadratures were done at build time), so a
 /// law that is never evaluated (a threshold the master tables answer) costs nothing.
 /// Evaluation is a cubic polynomial in a cell found from the bits of its argument (the first
-/// visit of an octave fills that octave's cells from the table). The tables sit behind an
+/// visit of a block of eight cells fills them from the table). The tables sit behind an
 /// [`Arc`], so a clone (or `CrackLaw::from(&law)`) shares them, with the cells filled so far,
 /// instead of copying.
 #[derive(Debug, Clone)]
