@@ -34,6 +34,10 @@ pub use crate::quad::{ALPHA_MAX, ALPHA_MIN, LN_ALPHA_STEP};
 // that a table of k costs no exponential and uses the very alpha the integrals were computed
 // at, also in a cross-compiled build).
 include!(concat!(env!("OUT_DIR"), "/j_nodes.rs"));
+// The bucket index holds interval indices as `u32`: every table has fewer nodes than that
+// (checked when the crate compiles).
+const _: () = assert!(J_NODES.len() < u32::MAX as usize);
+
 /// Number of nodes in each interpolation stencil.
 pub const STENCIL: usize = 6;
 
@@ -99,7 +103,7 @@ impl BranchTable {
             while i + 1 < intervals && zeta[i + 1] <= left {
                 i += 1;
             }
-            // at most 2^20 buckets and a few thousand intervals: i fits
+            // i < intervals < J_NODES.len(), which fits in u32 (asserted at compile time)
             bucket.push(i as u32);
         }
         Self {
@@ -468,90 +472,5 @@ impl CrackLaw {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::{BranchTable, CrackLaw, FAST_BITS, FAST_MAX_EXP, FAST_MIN_EXP, J_NODES};
-    use crate::integrals::JIntegrals;
-    use crate::law::{Branch, CrackPoint};
-    use crate::quad::{j3_complement_log_term, node_alpha, node_count};
-
-    /// The fast representation reproduces the table it interpolates: |v| within 1e-9 relative
-    /// and d|v|/dr within 1e-5 (the table's own slope accuracy) over every octave it covers (cubic Hermite error, about
-    /// (cell width in zeta)^4 / 384 times the curvature), sampled off the cell edges; within
-    /// 1e-8 in the cells across the table's end nodes, where its slope jumps.
-    #[test]
-    fn fast_cells_reproduce_the_table() {
-        for k in [0.005, 0.01, 0.3] {
-            let law = CrackLaw::new(k).unwrap();
-            let t = law.tables();
-            for (table, fast) in [(&t.closing, &t.closing_fast), (&t.opening, &t.opening_fast)] {
-                let (mut worst, mut worst_slope) = (0.0f64, 0.0f64);
-                for e in FAST_MIN_EXP..FAST_MAX_EXP {
-                    for i in 0..(3 << FAST_BITS) {
-                        let r = 2f64.powi(e) * (1.0 + (i as f64 + 0.37) / (3 << FAST_BITS) as f64);
-                        let (f, df) = fast.eval(r, table).unwrap();
-                        let (w, dw) = table.eval(r.ln());
-                        let (g, dg) = (w.exp(), w.exp() * dw / r);
-                        // the table's first and last nodes are kinks (linear extrapolation
-                        // beyond them); a cell across one is held to the table's own 1e-8
-                        let h = 2f64.powi(e - FAST_BITS as i32);
-                        let ends = [table.zeta[0], table.zeta[table.zeta.len() - 1]];
-                        let kink = ends.iter().any(|z| (z.exp() - r).abs() < h);
-                        let err = (f / g - 1.0).abs();
-                        assert!(err < 1e-8, "k = {k}, r = {r:e}: {err:e}");
-                        if !kink {
-                            worst = worst.max(err);
-                        }
-                        worst_slope = worst_slope.max(((df - dg) / dg).abs());
-                    }
-                }
-                assert!(worst < 1e-9, "k = {k}: {worst:e}");
-                assert!(worst_slope < 1e-5, "k = {k}: slope {worst_slope:e}");
-            }
-            // outside the octaves covered, the table itself answers
-            assert!(t
-                .closing_fast
-                .eval(2f64.powi(FAST_MAX_EXP), &t.closing)
-                .is_none());
-            assert!(t
-                .closing_fast
-                .eval(2f64.powi(FAST_MIN_EXP - 1), &t.closing)
-                .is_none());
-        }
-    }
-
-    /// The nodes taken as they come (in decreasing alpha, already sorted by zeta) build the
-    /// very table that sorting them builds, bit for bit, on both branches and across k.
-    #[test]
-    fn nodes_as_they_come_build_the_sorted_table() {
-        for k in [0.005, 0.01, 0.02, 0.05, 0.3, 0.9] {
-            for branch in [Branch::Closing, Branch::Opening] {
-                // the nodes in increasing alpha, as `Tables::new` once collected them
-                let points: Vec<(f64, f64)> = J_NODES
-                    .iter()
-                    .filter_map(|&[alpha, j3, m, k_log]| {
-                        let j = JIntegrals::from_parts(alpha, j3, m, k_log);
-                        let p = CrackPoint::from_integrals(k, &j, branch).ok()?;
-                        Some((p.zeta(), p.v.abs().ln()))
-                    })
-                    .collect();
-                let sorted = BranchTable::from_points(points.clone());
-                let (zeta, w): (Vec<f64>, Vec<f64>) = points.into_iter().rev().unzip();
-                assert!(zeta.windows(2).all(|p| p[0] < p[1]), "k = {k}: not sorted");
-                let direct = BranchTable::from_nodes(zeta, w);
-                // Debug prints each float's shortest round trip: equal text, equal bits
-                assert_eq!(format!("{direct:?}"), format!("{sorted:?}"), "k = {k}");
-            }
-        }
-    }
-
-    /// The build-time table holds exactly what the quadrature gives now.
-    #[test]
-    fn build_time_nodes_equal_the_quadrature() {
-        assert_eq!(J_NODES.len(), node_count());
-        for i in (0..J_NODES.len()).step_by(97) {
-            let alpha = node_alpha(i);
-            let (j3, m, k) = j3_complement_log_term(alpha);
-            assert_eq!(J_NODES[i], [alpha, j3, m, k], "node {i}");
-        }
-    }
-}
+#[path = "table_tests.rs"]
+mod tests;
