@@ -191,8 +191,9 @@ const FAST_MAX_EXP: i32 = 24;
 /// fills that block from the table (9 edges, 256 bytes of its own). A lone collision with a
 /// law of its own (the restitution's ODE fallback at a random k) touches few of an octave's 128
 /// cells, and whole octaves (4 KB each) made its law a third of its cost: 1343 such collisions
-/// took 1.64 s with whole octaves, 1.47 s with blocks of eight (1.46 s with two cells, 1.50 s
-/// with sixteen) and 1.10 s with warm laws; a search, which shares its law, 0.4 % more
+/// took 1.64 s with whole octaves, 1.47 s with blocks of eight (1.52 s with two cells, 1.46 s
+/// with four, 1.50 s with sixteen: one run each, within the noise of eight) and 1.10 s with
+/// warm laws; a search, which shares its law, 0.4 % more
 /// instructions (docs/performance.md, "The crack law of each k"). The cells' values do not
 /// depend on how many are filled at once.
 const FAST_BLOCK_BITS: u32 = 3;
