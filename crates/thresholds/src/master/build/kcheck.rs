@@ -2,7 +2,11 @@
 //! the end curves' grid), in each bin of y, the quintic in ln k through the six tables around it
 //! (the sextic through seven in the first and the last interval) is compared with the exact
 //! search along the nodes of the nearest row, from far from the end towards it; the interval is
-//! vouched for in that bin down to the last distance that passed. Closer to the end, where the
+//! vouched for in that bin down to the last distance that passed. In plain x a check point that
+//! misses by more than the build's tolerance does not end the walk at once: from there on each
+//! check point is vouched for while the polynomial stays within
+//! [`BuildConfig::kcheck_spread_tol`] of the nodes at nine points around it and within
+//! [`BuildConfig::kcheck_default_agree`] of the default search. Closer to the end, where the
 //! tables serve as lower bounds only (their `d_lb`), the same check goes on and gives the
 //! interval's lower-bound limit (`bound_limit`).
 
@@ -53,11 +57,24 @@ pub fn k_checks(
         let k_mid = (tables[i].k * tables[i + 1].k).sqrt();
         let law = CrackLaw::new(k_mid)?;
         let cache = Cache::default();
+        // a quarter and three quarters of the interval in ln k, for the checks past the first
+        // miss ([`BuildConfig::kcheck_spread_tol`])
+        let (k_lo, k_hi) = (tables[i].k, tables[i + 1].k);
+        let spread_laws = [
+            CrackLaw::new(k_lo.powf(0.75) * k_hi.powf(0.25))?,
+            CrackLaw::new(k_lo.powf(0.25) * k_hi.powf(0.75))?,
+        ];
+        let spread_caches = [Cache::default(), Cache::default()];
+        let spread = Spread {
+            laws: [&spread_laws[0], &law, &spread_laws[1]],
+            caches: [&spread_caches[0], &cache, &spread_caches[1]],
+            dy,
+        };
         let bins: Vec<CellData> = (0..ny)
             .into_par_iter()
             .map(|b| {
                 let y = y0 + (b as f64 + 0.5) * dy;
-                check_bin(cfg, &law, &cache, &all, &curves, &tables[i], y)
+                check_bin(cfg, &spread, &all, &curves, &tables[i], y)
             })
             .collect();
         let plain = bins.iter().filter(|c| c.x_hi[0].is_finite()).count();
@@ -72,24 +89,67 @@ pub fn k_checks(
     // this check's description replaces an earlier one's
     out.header.retain(|h| !h.starts_with("k checks:"));
     out.header.push(format!(
-        "k checks: the polynomial in ln k through {K_STENCIL} tables ({K_STENCIL_EDGE} in the first and last interval), in each interval of k at its middle k, in y bins of {}, along every {CHECK_EVERY}nd node of the nearest row, to {}; then on through the tables' lower bounds with the default search within {} (d_lb)",
+        "k checks: the polynomial in ln k through {K_STENCIL} tables ({K_STENCIL_EDGE} in the first and last interval), in each interval of k at its middle k, in y bins of {}, along every {CHECK_EVERY}nd node of the nearest row, to {}; in plain x past the first miss on while within {} of the nodes at the bin's middle and edges in y and a quarter, half and three quarters of the interval in ln k, and within {} of the default search at the middle; then on through the tables' lower bounds with the default search within {} (d_lb)",
         number(dy),
         number(cfg.tol),
+        number(cfg.kcheck_spread_tol),
+        number(cfg.kcheck_default_agree),
         number(cfg.bound_agree)
     ));
     Ok(out)
 }
 
+/// The three k of an interval where a k check looks past its first miss (a quarter, half and
+/// three quarters of it in ln k, each with its crack law and nodes; the middle one is the
+/// check's own), and the width of the y bins.
+struct Spread<'a> {
+    laws: [&'a CrackLaw; 3],
+    caches: [&'a Cache; 3],
+    dy: f64,
+}
+
+impl Spread<'_> {
+    /// Whether the polynomial in ln k of `curve` (ratio `v`) at `x` is within
+    /// [`BuildConfig::kcheck_spread_tol`] of the exact nodes at the bin's middle `y` and edges,
+    /// at each of the three k, and within [`BuildConfig::kcheck_default_agree`] of the default
+    /// search at the middle.
+    fn holds(
+        &self,
+        cfg: &BuildConfig,
+        all: &MasterTables,
+        curve: Curve,
+        v: usize,
+        x: f64,
+        y: f64,
+    ) -> bool {
+        let ratio = |y: f64, k: f64| {
+            all.g_plain_between_tables(curve, y, x, k)
+                .map(|g| 1.0 + g.exp())
+        };
+        for dy in [0.0, -0.5 * self.dy, 0.5 * self.dy] {
+            for (law, cache) in self.laws.iter().zip(&self.caches) {
+                let exact = cache.node(cfg, law, x, y + dy).ratio(v);
+                if rel_diff(ratio(y + dy, law.k()), exact) > cfg.kcheck_spread_tol {
+                    return false;
+                }
+            }
+        }
+        let law = self.laws[1];
+        let theirs = default_search(cfg, law, x, y).ratio(v);
+        rel_diff(ratio(y, law.k()), theirs) <= cfg.kcheck_default_agree
+    }
+}
+
 /// The limits of the polynomial in ln k at `y` (as a cell's).
 fn check_bin(
     cfg: &BuildConfig,
-    law: &CrackLaw,
-    cache: &Cache,
+    spread: &Spread,
     all: &MasterTables,
     curves: &EndCurves,
     lower: &TableData,
     y: f64,
 ) -> CellData {
+    let (law, cache) = (spread.laws[1], spread.caches[1]);
     let Some(row) = lower
         .rows
         .iter()
@@ -100,14 +160,24 @@ fn check_bin(
     let exact = |x: f64, v: usize| cache.node(cfg, law, x, y).ratio(v);
     let mut cell = CellData::NONE;
     let mut lb = cell.d_lo;
-    // plain x, from far from the end towards it
+    // plain x, from far from the end towards it; past the first miss on while the
+    // polynomial holds around the check point (`Spread::holds`)
     for (v, curve) in [(0, Curve::Stick), (1, Curve::OnsetBody)] {
         let mut last_ok = f64::NEG_INFINITY;
+        let mut missed = false;
         for &x in row.body.x.iter().step_by(CHECK_EVERY) {
             let Some(g) = all.g_plain_between_tables(curve, y, x, law.k()) else {
                 break;
             };
-            if rel_diff(Some(1.0 + g.exp()), exact(x, v)) > cfg.tol {
+            let ok = if missed {
+                spread.holds(cfg, all, curve, v, x, y)
+            } else if rel_diff(Some(1.0 + g.exp()), exact(x, v)) > cfg.tol {
+                missed = true;
+                spread.holds(cfg, all, curve, v, x, y)
+            } else {
+                true
+            };
+            if !ok {
                 break;
             }
             last_ok = x;

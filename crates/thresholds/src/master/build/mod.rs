@@ -114,6 +114,21 @@ pub struct BuildConfig {
     /// domain (one fewer elsewhere), each within 2.4e-6 of the reference search; 0.0625 answered
     /// fewer than 0.25 (a finer bin meets more of the narrow failures near the kink).
     pub kcheck_dy: f64,
+    /// Past the first check point of a k check in plain x that misses by more than
+    /// [`BuildConfig::tol`], the interval is still vouched for, check point by check point,
+    /// while the polynomial in ln k stays within this (relative) of the exact nodes at nine
+    /// points around it (the bin's middle and edges in y, a quarter, half and three quarters
+    /// of the interval in ln k) and within [`BuildConfig::kcheck_default_agree`] of the
+    /// default search at the middle: 4e-6. Near the kink of the cliff the tables' own
+    /// interpolation (in x between nodes, in y between rows) scatters by 1-4e-6 around the
+    /// nodes without growing, and the first check above 2e-6 had stopped whole bins there
+    /// (`docs/performance.md`, "The k checks past their first miss").
+    pub kcheck_spread_tol: f64,
+    /// The default search must lie within this (relative) of the polynomial in ln k at each
+    /// check point that [`BuildConfig::kcheck_spread_tol`] vouches for: 5e-6, so that with the
+    /// interpolation between check points the answers stay within the 1e-5 the tables promise
+    /// against it.
+    pub kcheck_default_agree: f64,
 }
 
 impl BuildConfig {
@@ -145,6 +160,8 @@ impl BuildConfig {
             table_k: (0.005, 3, 11),
             ends_k: (0.005, 12, 41),
             kcheck_dy: 0.125,
+            kcheck_spread_tol: 4e-6,
+            kcheck_default_agree: 5e-6,
         }
     }
 
