@@ -15,7 +15,9 @@
 //!    its two rows (at the distance to the interpolated end) and a row added in its middle where
 //!    the check fails, down to 1/64.
 //! 4. **k intervals** ([`kcheck`]): between tables of neighbouring k, the quintic in ln k is
-//!    checked at the middle k in every eighth of y (`BuildConfig::kcheck_dy`).
+//!    checked at the middle k in every eighth of y (`BuildConfig::kcheck_dy`); in plain x past
+//!    a first miss on while it holds at nine points around each check node
+//!    (`BuildConfig::kcheck_spread_tol`).
 //!
 //! A node is the exact search ([`crate::sticking_thresholds`]) at a synthetic contact whose
 //! dimensionless numbers are the node's ([`synthetic`]), at `rel_tol` 1e-8 with collisions at
