@@ -122,14 +122,16 @@ impl Spread<'_> {
         x: f64,
         y: f64,
     ) -> bool {
-        let ratio = |y: f64, k: f64| {
-            all.g_plain_between_tables(curve, y, x, k)
+        // the polynomial's ratio at (x, y_at) for k
+        let ratio = |y_at: f64, k: f64| {
+            all.g_plain_between_tables(curve, y_at, x, k)
                 .map(|g| 1.0 + g.exp())
         };
-        for dy in [0.0, -0.5 * self.dy, 0.5 * self.dy] {
+        // the bin's middle and its two edges
+        for y_at in [y, y - 0.5 * self.dy, y + 0.5 * self.dy] {
             for (law, cache) in self.laws.iter().zip(&self.caches) {
-                let exact = cache.node(cfg, law, x, y + dy).ratio(v);
-                if rel_diff(ratio(y + dy, law.k()), exact) > cfg.kcheck_spread_tol {
+                let exact = cache.node(cfg, law, x, y_at).ratio(v);
+                if rel_diff(ratio(y_at, law.k()), exact) > cfg.kcheck_spread_tol {
                     return false;
                 }
             }
