@@ -1,4 +1,4 @@
-//! `cargo xtask master-table [--part ends|tables|kcheck|revouch|bounds|beyond] [--check]`: build the master tables of
+//! `cargo xtask master-table [--part ends|tables|kcheck|revouch|bounds|beyond|midpoints] [--check]`: build the master tables of
 //! V_stick / V_stick,JKR with the exact search and write them to `crates/thresholds/data/`
 //! (`master_ends.csv`, the end curves and the checks between tables of neighbouring k;
 //! `master_k<k>.csv`, one table a k), or recompute a sample of their nodes and end points and
@@ -16,6 +16,7 @@ use thresholds::master::build::check::{
 };
 use thresholds::master::build::ends::{build_ends, repair_ends};
 use thresholds::master::build::kcheck::k_checks;
+use thresholds::master::build::midpoints::recheck_table;
 use thresholds::master::build::revouch::{revouch_table, Pass};
 use thresholds::master::build::BuildConfig;
 use thresholds::master::format::{parse_ends, parse_table, EndsData, TableData};
@@ -59,6 +60,9 @@ pub enum Part {
     /// The committed tables' rows that are not monotone checked for no bouncing beyond their
     /// ends up to where their ratios stop increasing (no new nodes).
     Beyond,
+    /// The committed tables' rows with their finest intervals checked again at the midpoints,
+    /// each piece's vouched range ended at the first that fails (no new rows).
+    Midpoints,
 }
 
 /// How `--part tables` treats the committed tables.
@@ -221,7 +225,7 @@ pub fn run_build(
                 t.header
                     .iter()
                     .filter(|h| {
-                        ["revouched:", "bounds:", "beyond:"]
+                        ["revouched:", "bounds:", "beyond:", "midpoints:"]
                             .iter()
                             .any(|p| h.starts_with(p))
                     })
@@ -246,7 +250,10 @@ pub fn run_build(
             write_table(root, &t, &progress)?;
         }
     }
-    if matches!(part, Part::Revouch | Part::Bounds | Part::Beyond) {
+    if matches!(
+        part,
+        Part::Revouch | Part::Bounds | Part::Beyond | Part::Midpoints
+    ) {
         let ends = committed_ends(root)?;
         for t in committed_tables(root)? {
             let i = cfg
@@ -259,6 +266,7 @@ pub fn run_build(
             let mut t = match part {
                 Part::Revouch => revouch_table(Pass::Revouch, &cfg, &t, &ends, &progress)?,
                 Part::Bounds => revouch_table(Pass::Bounds, &cfg, &t, &ends, &progress)?,
+                Part::Midpoints => recheck_table(&cfg, &t, &progress)?,
                 _ => check_beyond_table(&cfg, &t, &progress)?,
             };
             stamp(&mut t.header);

@@ -24,7 +24,7 @@
 //!    ([`super::floor`]).
 
 use super::binary::Table;
-use super::format::{CELL_LIMITS, LOWER_BOUND_OFFSET};
+use super::format::{CELL_LIMITS, LOWER_BOUND_OFFSET, SHEARED_REACH};
 use super::interp::lagrange_weight;
 use super::table::{Curve, Levels, RowsAt};
 use super::verdict::{both, side, Eval, Side, BOUND_MARGIN, V_MAX_MARGIN};
@@ -255,14 +255,16 @@ impl MasterTables {
                     None => vouched = false,
                 }
             }
-            if vouched && lo <= hi {
+            // the checks at a fixed distance reach SHEARED_REACH from the end: farther, only
+            // plain x was checked (below)
+            let reach = SHEARED_REACH.ln();
+            if vouched && lo <= hi.min(reach) && u <= reach {
                 let at = |u: f64| ks.combine(|t, rows| t.g_at_in(rows, curve, y, u));
-                // far from the end the body's ratios have converged (the JKR limit): its first
-                // node answers beyond it; a strip has no such side
-                let u = match curve {
-                    Curve::OnsetStrip if u > hi => return Eval::Unknown,
-                    _ => u.min(hi),
-                };
+                // a strip holds nothing beyond its farthest node
+                if curve == Curve::OnsetStrip && u > hi {
+                    return Eval::Unknown;
+                }
+                let u = u.min(hi);
                 if u >= lo {
                     return at(u).map_or(Eval::Unknown, Eval::Value);
                 }

@@ -17,7 +17,7 @@
 //! x_s is where F reaches [`F_TOP`], x_on where F_on does. A piece is vouched for where its
 //! distance to its end is at least its `d_lo` (`inf`: nowhere). A cell is vouched for in plain
 //! x (rows interpolated at the same x) up to `x_hi`, and at a fixed distance to the end (the
-//! end interpolated in y) down to `d_lo`. The optional `d_lb` (`cargo xtask master-table --part
+//! end interpolated in y) from `d_lo` up to [`SHEARED_REACH`] (the checks reach no farther). The optional `d_lb` (`cargo xtask master-table --part
 //! bounds`; absent: `d_lo`) reach closer to the end for lower bounds only: there the
 //! interpolation was checked against the exact nodes but the default search strays from them
 //! by more than the tables promise, so the tables answer only "above the search limit" from it
@@ -42,6 +42,14 @@
 /// answered; above it a search can meet the hyper-speed bouncing of large soft grains (from about
 /// 5e5 V_stick,JKR at y = -4).
 pub const F_TOP: f64 = 1e4;
+
+/// How far from the end (in x) the checks at a fixed distance to it reach, the cells' and the k
+/// checks': a cell's or a k check's `d_lo` vouches for the sheared interpolation from `d_lo` up
+/// to this distance only; farther from the end only plain x was checked. (Until 2026-11-28 the
+/// answer read the sheared form at any distance beyond `d_lo`: next to the kink, where a cell's
+/// plain checks stop at a crossing of the two kinds of bouncing 0.1-0.3 in x below x_s - 2, that
+/// answered F up to 3.7 % off, k = 0.0317, x = -0.562, y = -4.678, F = 87.70 against 90.94.)
+pub const SHEARED_REACH: f64 = 2.0;
 
 /// One piece of a row: nodes in x with their ratios, vouched for down to a distance to the
 /// piece's end.

@@ -34,9 +34,7 @@ fn curve(p: &PieceData, end: f64, v: usize) -> (Vec<f64>, Vec<f64>) {
     (u, g)
 }
 
-/// Sheared checks reach this far from the end (in x): beyond, the cells are interpolated in
-/// plain x (`crate::master::table`).
-pub const SHEARED_REACH: f64 = 2.0;
+pub use crate::master::format::SHEARED_REACH;
 
 /// The last check point that passed before the first that failed, in the order given: `all`
 /// when every one passed, `none` when the first failed.

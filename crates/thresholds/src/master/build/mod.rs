@@ -29,6 +29,7 @@ pub mod cells;
 pub mod check;
 pub mod ends;
 pub mod kcheck;
+pub mod midpoints;
 pub mod revouch;
 pub mod row;
 

@@ -120,6 +120,11 @@ fn piece(
         nodes.extend(added);
         nodes.sort_by(|a, b| a.0.total_cmp(&b.0));
     };
+    // a failure no node could mend, met in an earlier round, ends the range too (the last
+    // round skips it; until 2026-11-28 it was lost there: `midpoints.rs`)
+    for (hi, stop) in x_hi.iter_mut().zip(beyond_repair) {
+        *hi = hi.min(stop);
+    }
     // the default search must agree with every node up to the vouched end
     let last = nodes.last().map_or(f64::NEG_INFINITY, |n| n.0);
     for (v, hi) in x_hi.iter_mut().enumerate() {
