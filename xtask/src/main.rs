@@ -92,10 +92,15 @@ enum Command {
         /// cells apart (a double-collision miss next to the onset no longer refuses bouncing).
         #[arg(long, conflicts_with_all = ["check", "k_cells", "refine"])]
         recheck: bool,
+        /// Check every vouched cell of the committed tables (or those of `--only`) again at a
+        /// quarter and three quarters of its interval, as at its centre; a cell that misses
+        /// there is vouched no longer.
+        #[arg(long, conflicts_with_all = ["check", "k_cells", "refine", "recheck"])]
+        quarters: bool,
         /// Rebuild the rows of the committed tables (or those of `--only`) holding a node that
         /// was built without thresholds where the master tables now vouch for them (most of
         /// them below y = -4.5); run `--k-cells` after.
-        #[arg(long, conflicts_with_all = ["check", "k_cells", "refine", "recheck"])]
+        #[arg(long, conflicts_with_all = ["check", "k_cells", "refine", "recheck", "quarters"])]
         refill: bool,
     },
     /// Build the Python package's wheel (maturin, PyO3's stable ABI: one wheel for every
@@ -144,6 +149,11 @@ fn main() -> ExitCode {
             only,
             ..
         } => xtask::restitution_table::run_recheck(&workspace_root(), &only),
+        Command::RestitutionTable {
+            quarters: true,
+            only,
+            ..
+        } => xtask::restitution_table::run_quarters(&workspace_root(), &only),
         Command::RestitutionTable { k_cells: true, .. } => {
             xtask::restitution_table::run_k_cells(&workspace_root())
         }

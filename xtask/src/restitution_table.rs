@@ -1,5 +1,5 @@
 //! `cargo xtask restitution-table [--check | --only I,.. | --k-cells | --refine --only I,.. |
-//! --recheck [--only I,..] | --refill [--only I,..]]`:
+//! --recheck [--only I,..] | --quarters [--only I,..] | --refill [--only I,..]]`:
 //! build the restitution tables (V_out and e of single collisions over the dimensionless numbers, k and the impact speed) from the ODE and
 //! write them to `crates/thresholds/data/restitution_k<k>.csv`, or recompute a sample of their
 //! values and fail if the model no longer gives them. They stand on the committed master
@@ -16,7 +16,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 use thresholds::master::build::{grid_k, node, rel_diff, BuildConfig as MasterConfig};
 use thresholds::restitution::build::{build_table, ratios, BuildConfig};
-use thresholds::restitution::check::k_cells;
+use thresholds::restitution::check::{check_quarters, k_cells};
 use thresholds::restitution::format::{parse, TableData};
 use thresholds::restitution::refine::{recheck_table, refill_table, refine_table};
 use thresholds::restitution::to_text;
@@ -187,6 +187,15 @@ pub fn run_recheck(root: &Path, only: &[usize]) -> Result<(), Error> {
     each_committed(root, only, &|cfg, t, masters, progress| {
         recheck_table(cfg, t, masters, progress)?;
         Ok(Some("cells checked again".into()))
+    })
+}
+
+/// Checks every vouched cell of the committed tables (or `only` these indices) again at a quarter
+/// and three quarters of its interval, and writes them (their k cells kept).
+pub fn run_quarters(root: &Path, only: &[usize]) -> Result<(), Error> {
+    each_committed(root, only, &|cfg, t, masters, progress| {
+        let lost = check_quarters(cfg, t, masters, progress)?;
+        Ok((lost > 0).then(|| format!("{lost} cell flags fewer at the quarters")))
     })
 }
 

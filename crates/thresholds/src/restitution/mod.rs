@@ -18,7 +18,8 @@
 //! sticks (e = 0). The tables hold h at the channels on nodes of rows of constant y (in u = ln(x_s - x), as the master tables) for every
 //! table k; an answer is the local cubic along the channels, along the row, across rows and
 //! across k. Each cell between two rows was checked at its centre against the ODE (e within
-//! 5e-5, half the 1e-4 promised), and each interval between tables of neighbouring k likewise;
+//! 5e-5, half the 1e-4 promised), and at its quarters at denser speeds
+//! ([`check::check_quarters`]), and each interval between tables of neighbouring k at its centre;
 //! elsewhere (near the cliff, a double-collision window narrower than 1e-4 of V_stick, speeds
 //! beyond 9.5 e-folds above V_stick, within 1e-5 of V_stick ([`STICK_MARGIN`]) or below the
 //! first channel (sigma or nu = 1e-4), within 3e-4 of the onset ([`ONSET_MARGIN`]), within
