@@ -93,8 +93,8 @@ enum Command {
         #[arg(long, conflicts_with_all = ["check", "k_cells", "refine"])]
         recheck: bool,
         /// Check every vouched cell of the committed tables (or those of `--only`) again at a
-        /// quarter and three quarters of its interval, as at its centre; a cell that misses
-        /// there is vouched no longer.
+        /// quarter, half and three quarters of its interval, at the centre's speeds and denser
+        /// ones (what a build now checks); a cell that misses there is vouched no longer.
         #[arg(long, conflicts_with_all = ["check", "k_cells", "refine", "recheck"])]
         quarters: bool,
         /// Rebuild the rows of the committed tables (or those of `--only`) holding a node that

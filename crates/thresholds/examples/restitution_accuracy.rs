@@ -7,7 +7,10 @@
 //! ```sh
 //! cargo run --release -p thresholds --example restitution_accuracy -- 100000 2000
 //! cargo run --release -p thresholds --example restitution_accuracy -- 100000 2000 wide
+//! cargo run --release -p thresholds --example restitution_accuracy -- 100000 100000 wide own
 //! ```
+//! (`own`: k drawn from the tables' own k instead, where no check between tables stands behind
+//! an answer.)
 //! prints the share the tables answer, the time of those answers (one thread), and against the
 //! ODE on the first `sample` of them the largest difference in e and whether every outcome
 //! agrees. The impact speeds are half bouncing, half double collisions (between V_on and
@@ -36,7 +39,10 @@ fn main() {
     let mut args = std::env::args().skip(1);
     let n: usize = args.next().map_or(100_000, |s| s.parse().unwrap());
     let sample: usize = args.next().map_or(2000, |s| s.parse().unwrap());
-    let wide = args.next().as_deref() == Some("wide");
+    let rest: Vec<String> = args.collect();
+    let wide = rest.iter().any(|a| a == "wide");
+    // the tables' own k only, where no check between tables stands behind an answer
+    let own = rest.iter().any(|a| a == "own");
     let tables = RestitutionTables::standard();
     let ks = tables.table_k().to_vec();
     assert!(!ks.is_empty(), "no restitution table is embedded");
@@ -46,7 +52,11 @@ fn main() {
     let mut cases = Vec::with_capacity(n);
     while cases.len() < n {
         let p = draw(&mut rng, false);
-        let k = rng.restitution_k();
+        let k = if own {
+            ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+        } else {
+            rng.restitution_k()
+        };
         let law = CrackLaw::new(k).unwrap();
         let opts = SearchOptions::default();
         let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {
@@ -70,7 +80,9 @@ fn main() {
         .collect();
     let elapsed = start.elapsed().as_secs_f64();
     let answered = answers.iter().filter(|a| a.is_some()).count();
-    let ks = if tables.k_checked() {
+    let ks = if own {
+        format!("the tables' own {ks:?}")
+    } else if tables.k_checked() {
         format!("log-uniform over {} - {}", ks[0], ks[ks.len() - 1])
     } else {
         format!("{ks:?}")

@@ -304,19 +304,44 @@ const FAST_ALONG_X: [(f64, f64, usize, f64); 7] = [
     (-1.847, -4.49, 10, 80.0),
 ];
 
+/// Collisions at the y and k of [`FAST_ALONG_X`], farther from the cliff or slower, where e
+/// changes slowly (the tables within 8e-7 of the ODE after the quarters were checked): the
+/// tables still answer there, so the test above is not passed by declining everything.
+const NEARBY: [(f64, f64, usize, f64); 4] = [
+    (-2.5, -4.294, 6, 1.5),
+    (-2.0, -4.294, 6, 3.0),
+    (-1.6, -4.294, 6, 3.0),
+    (-3.5, -4.5, 10, 5.0),
+];
+
+/// Whether the tables answer the collision at `(x, y)` of table `i` at `ratio` V_stick, asserting
+/// e within 1e-4 of the ODE where they do.
+fn at_point_agrees(x: f64, y: f64, i: usize, ratio: f64) -> bool {
+    let masters = thresholds::MasterTables::standard();
+    let k = masters.table_k()[i];
+    let law = CrackLaw::new(k).unwrap();
+    let (contact, t_vis) = thresholds::master::build::synthetic(x, y, 1.0).unwrap();
+    let f = masters.ratios_at(x, y, k, 1000.0).unwrap().v_stick.unwrap();
+    let v_in = ratio * f * contact.v_stick_jkr();
+    let what = format!("x = {x}, y = {y}, k = {k}, V_in = {ratio} V_stick");
+    table_agrees_with_the_ode(&contact, &law, t_vis, v_in, &what)
+}
+
 /// Where e changes fast along x, each cell is checked at its quarters and at denser speeds
 /// (`cargo xtask restitution-table --quarters`): at the collisions that missed, the tables now
-/// agree with the ODE within 1e-4 or leave them to it.
+/// agree with the ODE within 1e-4 or leave them to it, and next to them they still answer.
 #[test]
 fn where_e_changes_fast_along_x_the_tables_agree_with_the_ode_or_decline() {
-    let masters = thresholds::MasterTables::standard();
     for (x, y, i, ratio) in FAST_ALONG_X {
-        let k = masters.table_k()[i];
-        let law = CrackLaw::new(k).unwrap();
-        let (contact, t_vis) = thresholds::master::build::synthetic(x, y, 1.0).unwrap();
-        let f = masters.ratios_at(x, y, k, 1000.0).unwrap().v_stick.unwrap();
-        let v_in = ratio * f * contact.v_stick_jkr();
-        let what = format!("x = {x}, y = {y}, k = {k}, V_in = {ratio} V_stick");
-        table_agrees_with_the_ode(&contact, &law, t_vis, v_in, &what);
+        at_point_agrees(x, y, i, ratio);
     }
+    let answered = NEARBY
+        .iter()
+        .filter(|&&(x, y, i, ratio)| at_point_agrees(x, y, i, ratio))
+        .count();
+    assert!(
+        answered >= 2,
+        "the tables answered {answered} of {}",
+        NEARBY.len()
+    );
 }

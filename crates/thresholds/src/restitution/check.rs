@@ -1,10 +1,11 @@
 //! The checks of the restitution tables against the ODE: each cell between two rows at its
 //! centre, at speeds between the channels ([`BuildConfig::check_sigma`], [`BuildConfig::check_nu`]),
+//! and at its quarters at those and denser speeds ([`QUARTERS`]),
 //! e within [`BuildConfig::tol_e`], both sides and the bouncing side apart; each interval
 //! between tables of neighbouring k at its middle k ([`k_cells`]).
 
 use super::build::{collide, e_of, ratios, BuildConfig};
-use super::format::{RowData, Table, TableData};
+use super::format::{CellFlags, RowData, Table, TableData};
 use super::{RestitutionTables, MIN_WINDOW};
 use crate::master::{MasterTables, F_TOP};
 use crate::{Outcome, ThresholdsError};
@@ -87,17 +88,53 @@ pub(super) fn across(rows: &[RowData], j: usize, i: usize, t: f64) -> (f64, f64)
     (r.x_s - u.exp(), 0.5 * (r.y + rows[j + 1].y))
 }
 
-/// Where in its interval (in u) `--quarters` checks each vouched cell again.
+/// Where in its interval (in u, at mid-y) a cell is checked besides its centre, at both speed
+/// sets ([`BuildConfig::check_sigma`] and [`BuildConfig::quarter_sigma`], likewise nu).
 pub const QUARTERS: [f64; 3] = [0.25, 0.5, 0.75];
 
-/// Each vouched cell of `table` checked again at a quarter, half and three quarters of its
-/// interval (mid-y, [`QUARTERS`]) at the denser speeds [`BuildConfig::quarter_sigma`] and
-/// [`BuildConfig::quarter_nu`], as [`check_point`] checks its centre; a cell that misses
-/// there is vouched no longer (both sides, or the bouncing side, as the check says). Why: the
-/// centre at seven bouncing speeds let cells through where e changes fast along x (k = 0.02,
-/// x = -1.05 to -0.85, y = -4.29 at 15 V_stick: the centre's checks passed, e 2.8e-4 off
-/// three quarters along; k = 0.0504, x = -1.8, y = -4.5: 5e-4) or between two check speeds.
-/// How many cell flags were lost.
+/// `kept` (a cell's flags `(all, bouncing)`) after its checks at [`QUARTERS`] at both speed
+/// sets: a miss drops the flag of its side, as at the centre. Why: the centre at seven bouncing
+/// speeds let cells through where e changes fast along x (k = 0.02, x = -1.05 to -0.85,
+/// y = -4.29 at 15 V_stick: the centre's checks passed, e 2.8e-4 off three quarters along;
+/// k = 0.0504, x = -1.8, y = -4.5: 5.6e-4) or between two check speeds.
+fn check_quarters_of(
+    on: (&BuildConfig, &CrackLaw, &RestitutionTables, &MasterTables),
+    rows: &[RowData],
+    (j, i): (usize, usize),
+    mut kept: (bool, bool),
+) -> (bool, bool) {
+    let (cfg, law, tables, masters) = on;
+    let speed_sets = [
+        (&cfg.check_sigma[..], &cfg.check_nu[..]),
+        (&cfg.quarter_sigma[..], &cfg.quarter_nu[..]),
+    ];
+    for t in QUARTERS {
+        for speeds in speed_sets {
+            if !(kept.0 || kept.1) {
+                return kept;
+            }
+            let at = across(rows, j, i, t);
+            let (all, bouncing) = check_point_at(cfg, law, tables, masters, at, speeds);
+            kept = (kept.0 && all, kept.1 && bouncing);
+        }
+    }
+    kept
+}
+
+/// The flags `(all, bouncing)` of cell `i` (an empty `bouncing` record is `all`'s, as the files
+/// write it).
+fn flags_of(cells: &CellFlags, i: usize) -> (bool, bool) {
+    let all = cells.all.get(i).copied().unwrap_or(false);
+    (all, cells.bouncing.get(i).copied().unwrap_or(all))
+}
+
+/// The header line of a table whose cells [`check_quarters`] checked.
+pub const QUARTERS_HEADER: &str = "quarters: every vouched cell checked again at a quarter, half and three quarters of its interval (mid-y) at the centre's speeds and between every fourth pair of channels; a cell that missed is vouched no longer (cargo xtask restitution-table --quarters)";
+
+/// Each vouched cell of `table` checked again at its quarters ([`QUARTERS`], both speed sets;
+/// `cargo xtask restitution-table --quarters`, for tables whose cells were checked at their
+/// centres only), and [`QUARTERS_HEADER`] in its header; how many flags were dropped (each
+/// side of each cell counts).
 pub fn check_quarters(
     cfg: &BuildConfig,
     table: &mut TableData,
@@ -106,59 +143,37 @@ pub fn check_quarters(
 ) -> Result<usize, ThresholdsError> {
     let law = CrackLaw::new(table.k)?;
     let tables = RestitutionTables::from_parts(vec![Table::from_data(table)]);
+    let on = (cfg, &law, &tables, masters);
     let rows = &table.rows;
     let checks: Vec<(usize, Vec<(bool, bool)>)> = (0..rows.len().saturating_sub(1))
         .into_par_iter()
         .map(|j| {
-            let cells = &rows[j].cells;
             let flags = (0..rows[j].nodes.len().saturating_sub(1))
-                .map(|i| {
-                    // an empty `bouncing` record is `all`'s
-                    let all = cells.all.get(i).copied().unwrap_or(false);
-                    let mut kept = (all, cells.bouncing.get(i).copied().unwrap_or(all));
-                    for t in QUARTERS {
-                        if !(kept.0 || kept.1) {
-                            break;
-                        }
-                        let at = across(rows, j, i, t);
-                        let speeds = (&cfg.quarter_sigma[..], &cfg.quarter_nu[..]);
-                        let (all, bouncing) =
-                            check_point_at(cfg, &law, &tables, masters, at, speeds);
-                        kept = (kept.0 && all, kept.1 && bouncing);
-                    }
-                    kept
-                })
+                .map(|i| check_quarters_of(on, rows, (j, i), flags_of(&rows[j].cells, i)))
                 .collect();
             (j, flags)
         })
         .collect();
+    table.header.retain(|h| !h.starts_with("quarters:"));
+    table.header.push(QUARTERS_HEADER.into());
     let mut lost = 0;
     for (j, flags) in checks {
         let cells = &mut table.rows[j].cells;
-        if flags.is_empty() {
-            continue;
-        }
-        let before = cells
-            .all
-            .iter()
-            .chain(&cells.bouncing)
-            .filter(|&&f| f)
-            .count();
+        let count = |c: &CellFlags| {
+            (0..flags.len())
+                .map(|i| flags_of(c, i))
+                .map(|(a, b)| usize::from(a) + usize::from(b))
+                .sum::<usize>()
+        };
+        let before = count(cells);
         cells.all = flags.iter().map(|f| f.0).collect();
         cells.bouncing = flags.iter().map(|f| f.1).collect();
-        let after = cells
-            .all
-            .iter()
-            .chain(&cells.bouncing)
-            .filter(|&&f| f)
-            .count();
-        if after < before {
-            lost += before - after;
+        let fewer = before - count(cells);
+        if fewer > 0 {
+            lost += fewer;
             progress(&format!(
-                "restitution k = {}, cells of row y = {}: {} flags fewer at the quarters",
-                table.k,
-                table.rows[j].y,
-                before - after
+                "restitution k = {}, cells of row y = {}: {fewer} flags fewer at the quarters",
+                table.k, table.rows[j].y
             ));
         }
     }
@@ -166,7 +181,7 @@ pub fn check_quarters(
 }
 
 /// The cells (and the bouncing cells) of the rows marked in `rows_to_check` checked at their
-/// centres against the ODE.
+/// centres against the ODE, and those that pass at their quarters ([`QUARTERS`]).
 pub(super) fn check_cells(
     cfg: &BuildConfig,
     law: &CrackLaw,
@@ -176,6 +191,7 @@ pub(super) fn check_cells(
     progress: &(dyn Fn(&str) + Sync),
 ) {
     let tables = RestitutionTables::from_parts(vec![Table::from_data(table)]);
+    let on = (cfg, law, &tables, masters);
     let rows = &table.rows;
     let checks: Vec<(usize, Vec<(bool, bool)>)> = (0..rows.len().saturating_sub(1))
         .into_par_iter()
@@ -184,7 +200,8 @@ pub(super) fn check_cells(
             let flags = (0..rows[j].nodes.len().saturating_sub(1))
                 .map(|i| {
                     let (x, y) = centre(rows, j, i);
-                    check_point(cfg, law, &tables, masters, x, y)
+                    let kept = check_point(cfg, law, &tables, masters, x, y);
+                    check_quarters_of(on, rows, (j, i), kept)
                 })
                 .collect();
             (j, flags)

@@ -14,15 +14,19 @@
 //! 0.0252, x = -0.402, y = -4.096; `docs/performance.md`, "Master tables").
 //!
 //! This pass needs no new rows: for every interval of the finest width inside a piece's vouched
-//! range (the only ones whose failure the build could drop; every wider interval there passed
-//! the last round's check with the final nodes, or it would have been halved), the midpoint
-//! check once more with the committed nodes, and the vouched range ended at the start of the
-//! first that fails, as a build ends it. Where a limit moves, the piece's lower-bound limit
+//! range (the ones whose failure the build dropped), the midpoint check once more with the
+//! committed nodes, and the vouched range ended at the start of the first that fails. It does
+//! not redo the build: a wider interval below the first such failure passed the last round's
+//! check with the final nodes (or it would have been halved), but one beyond it may have been
+//! halved in an earlier round and never checked again; the range ends before those as long as
+//! the finest failure still fails with the final nodes (every committed row vouched past a
+//! change of kind of its nodes did: `tests/master_own_k.rs`), and a failure the build met with
+//! earlier nodes but that passes with the final ones is not counted here. Where a limit moves, the piece's lower-bound limit
 //! (`d_lb`, which `--part bounds` reached from the old limit) is dropped. The cells and the k
 //! checks keep theirs: an answer takes the smallest of the rows', the cell's and the k check's
 //! limits, so a row's new limit bounds them all.
 
-use super::row::interpolate;
+use super::row::{interpolate, ratios, Kind};
 use super::{rel_diff, BuildConfig, Cache};
 use crate::master::format::{PieceData, RowData, TableData};
 use crate::ThresholdsError;
@@ -45,13 +49,13 @@ fn finest(cfg: &BuildConfig, end: f64, a: f64, b: f64) -> bool {
 /// The vouched limit (`d_lo`) of ratio `v` of `piece` (ending at `end`, on the row at `y`) once
 /// its finest intervals inside the vouched range are checked again: the distance to the end of
 /// the start of the first that fails, or the old limit.
-pub fn recheck_piece(
+pub(super) fn recheck_piece(
     cfg: &BuildConfig,
     law: &CrackLaw,
     cache: &Cache,
     y: f64,
     end: f64,
-    piece: &PieceData,
+    (piece, kind): (&PieceData, Kind),
     v: usize,
 ) -> f64 {
     let d_lo = piece.d_lo[v];
@@ -71,7 +75,8 @@ pub fn recheck_piece(
             continue;
         }
         let u_mid = 0.5 * ((end - a).ln() + (end - b).ln());
-        let exact = cache.node(cfg, law, end - u_mid.exp(), y).ratio(v);
+        // as the build takes a node: a body's midpoint needs both ratios
+        let exact = ratios(cache.node(cfg, law, end - u_mid.exp(), y), kind).map(|r| r[v]);
         if rel_diff(Some(interpolate(&nodes, end, v, u_mid)), exact) > cfg.tol {
             return end - a;
         }
@@ -83,10 +88,19 @@ pub fn recheck_piece(
 /// where a limit moved; whether one moved.
 fn recheck_row(cfg: &BuildConfig, law: &CrackLaw, cache: &Cache, row: &RowData) -> (RowData, bool) {
     let mut r = row.clone();
-    let body = [0, 1].map(|v| recheck_piece(cfg, law, cache, row.y, row.x_s, &row.body, v));
+    let body =
+        [0, 1].map(|v| recheck_piece(cfg, law, cache, row.y, row.x_s, (&row.body, Kind::Body), v));
     let strip = [
         row.strip.d_lo[0],
-        recheck_piece(cfg, law, cache, row.y, row.x_on, &row.strip, 1),
+        recheck_piece(
+            cfg,
+            law,
+            cache,
+            row.y,
+            row.x_on,
+            (&row.strip, Kind::Strip),
+            1,
+        ),
     ];
     let moved = [body != row.body.d_lo, strip != row.strip.d_lo];
     if moved[0] {

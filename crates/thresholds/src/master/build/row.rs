@@ -20,8 +20,10 @@ const BEYOND: [f64; 3] = [1e-3, 0.1, 1.0];
 
 /// Which ratios a piece holds: the body both (F, F_on), the strip F_on only.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-enum Kind {
+pub(super) enum Kind {
+    /// The body: F and F_on.
     Body,
+    /// The strip: F_on.
     Strip,
 }
 
@@ -34,7 +36,8 @@ impl Kind {
     }
 }
 
-fn ratios(p: Point, kind: Kind) -> Option<[f64; 2]> {
+/// A node's ratios as a piece of `kind` takes them: a body node needs both (`None` otherwise).
+pub(super) fn ratios(p: Point, kind: Kind) -> Option<[f64; 2]> {
     match (kind, p) {
         (Kind::Body, Point::Bounce { f_stick, f_onset }) => Some([f_stick, f_onset]),
         (Kind::Strip, p) => p.onset().map(|o| [f64::NAN, o]),
