@@ -21,6 +21,7 @@ use thresholds::master::build::revouch::{revouch_table, Pass};
 use thresholds::master::build::BuildConfig;
 use thresholds::master::format::{parse_ends, parse_table, EndsData, TableData};
 use thresholds::master::{ends_to_text, table_to_text};
+use thresholds::CrackLaw;
 
 /// `--check` recomputes every this-many-th node of each table (95-135 of its 48 000-67 000
 /// values): a change of the model moves them all, so a sample finds it. 250 (190-270 a table)
@@ -266,7 +267,7 @@ pub fn run_build(
             let mut t = match part {
                 Part::Revouch => revouch_table(Pass::Revouch, &cfg, &t, &ends, &progress)?,
                 Part::Bounds => revouch_table(Pass::Bounds, &cfg, &t, &ends, &progress)?,
-                Part::Midpoints => recheck_table(&cfg, &t, &progress)?,
+                Part::Midpoints => recheck_table(&cfg, &CrackLaw::new(t.k)?, &t, &progress),
                 _ => check_beyond_table(&cfg, &t, &progress)?,
             };
             stamp(&mut t.header);

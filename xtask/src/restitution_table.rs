@@ -195,7 +195,8 @@ pub fn run_recheck(root: &Path, only: &[usize]) -> Result<(), Error> {
 /// checks), and writes them (their k cells kept).
 pub fn run_quarters(root: &Path, only: &[usize]) -> Result<(), Error> {
     each_committed(root, only, &|cfg, t, masters, progress| {
-        let lost = check_quarters(cfg, t, masters, progress)?;
+        let law = CrackLaw::new(t.k)?;
+        let lost = check_quarters((cfg, &law), t, masters, progress);
         // written even where nothing moved: the header says the quarters were checked
         Ok(Some(format!("{lost} cell flags fewer at the quarters")))
     })

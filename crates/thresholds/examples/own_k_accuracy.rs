@@ -12,12 +12,13 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use rayon::prelude::*;
-use thresholds::master::build::{node, BuildConfig};
-use thresholds::{CrackLaw, MasterTables};
+use thresholds::MasterTables;
 
 #[path = "common/domain.rs"]
 #[allow(dead_code)]
 mod domain;
+#[path = "common/own_k.rs"]
+mod own_k;
 
 use domain::Rng;
 
@@ -30,35 +31,16 @@ fn main() {
         panic!("usage: own_k_accuracy POINTS X_FROM X_TO Y_FROM Y_TO SEED");
     };
     let tables = MasterTables::standard();
-    let cfg = BuildConfig::standard();
     let ks = tables.table_k().to_vec();
-    let mut rng = Rng(seed as u64);
-    let points: Vec<(f64, f64, f64)> = (0..n as usize)
-        .map(|_| {
-            let x = x0 + (x1 - x0) * rng.next();
-            let y = y0 + (y1 - y0) * rng.next();
-            let i = ((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1);
-            (x, y, ks[i])
-        })
-        .collect();
-    // (x, y, k, the larger relative difference of F and F_on) where the tables give values
-    let off: Vec<(f64, f64, f64, f64)> = points
+    let points = own_k::draw(&mut Rng(seed as u64), n as usize, (x0, x1), (y0, y1), &ks);
+    // (point, how far off) where the tables give values
+    let off: Vec<([f64; 3], f64)> = points
         .par_iter()
-        .filter_map(|&(x, y, k)| {
-            let ours = tables.ratios_at(x, y, k, 1000.0)?;
-            let f = ours.v_stick?;
-            let exact = node(&cfg, &CrackLaw::new(k).unwrap(), x, y);
-            let d_f = (f / exact.stick()? - 1.0).abs();
-            let d_on = match (ours.v_double_onset, exact.onset()) {
-                (Some(a), Some(b)) => (a / b - 1.0).abs(),
-                _ => f64::INFINITY,
-            };
-            Some((x, y, k, d_f.max(d_on)))
-        })
+        .filter_map(|&p| Some((p, own_k::off(tables, p)?)))
         .collect();
-    let mut bad: Vec<_> = off.iter().filter(|o| o.3 > 5e-6).collect();
-    bad.sort_by(|a, b| b.3.total_cmp(&a.3));
-    for (x, y, k, d) in &bad {
+    let mut bad: Vec<_> = off.iter().filter(|o| o.1 > 5e-6).collect();
+    bad.sort_by(|a, b| b.1.total_cmp(&a.1));
+    for ([x, y, k], d) in &bad {
         println!("x = {x:.3}, y = {y:.3}, k = {k:.5}: {d:.1e} off");
     }
     println!(
@@ -66,6 +48,6 @@ fn main() {
         off.len(),
         points.len(),
         bad.len(),
-        bad.iter().filter(|o| o.3 > 1e-5).count()
+        bad.iter().filter(|o| o.1 > 1e-5).count()
     );
 }

@@ -76,6 +76,13 @@ impl PieceData {
     pub fn bound_limit(&self, v: usize) -> f64 {
         self.d_lb.map_or(self.d_lo[v], |d| d[v])
     }
+
+    /// The nodes as `(x, [F, F_on])`, x increasing (what a build's interpolation takes).
+    pub fn nodes(&self) -> Vec<(f64, [f64; 2])> {
+        (0..self.x.len())
+            .map(|i| (self.x[i], [self.f_stick[i], self.f_onset[i]]))
+            .collect()
+    }
 }
 
 /// One row of constant y.

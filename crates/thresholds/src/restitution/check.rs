@@ -89,7 +89,8 @@ pub(super) fn across(rows: &[RowData], j: usize, i: usize, t: f64) -> (f64, f64)
 }
 
 /// Where in its interval (in u, at mid-y) a cell is checked besides its centre, at both speed
-/// sets ([`BuildConfig::check_sigma`] and [`BuildConfig::quarter_sigma`], likewise nu).
+/// sets ([`BuildConfig::check_sigma`] and [`BuildConfig::check_nu`], and
+/// [`BuildConfig::quarter_speeds`]).
 pub const QUARTERS: [f64; 3] = [0.25, 0.5, 0.75];
 
 /// `kept` (a cell's flags `(all, bouncing)`) after its checks at [`QUARTERS`] at both speed
@@ -106,7 +107,7 @@ fn check_quarters_of(
     let (cfg, law, tables, masters) = on;
     let speed_sets = [
         (&cfg.check_sigma[..], &cfg.check_nu[..]),
-        (&cfg.quarter_sigma[..], &cfg.quarter_nu[..]),
+        (&cfg.quarter_speeds.0[..], &cfg.quarter_speeds.1[..]),
     ];
     for t in QUARTERS {
         for speeds in speed_sets {
@@ -131,19 +132,18 @@ fn flags_of(cells: &CellFlags, i: usize) -> (bool, bool) {
 /// The header line of a table whose cells [`check_quarters`] checked.
 pub const QUARTERS_HEADER: &str = "quarters: every vouched cell checked again at a quarter, half and three quarters of its interval (mid-y) at the centre's speeds and between every fourth pair of channels; a cell that missed is vouched no longer (cargo xtask restitution-table --quarters)";
 
-/// Each vouched cell of `table` checked again at its quarters ([`QUARTERS`], both speed sets;
+/// Each vouched cell of `table` (of `law`'s k) checked again at its quarters ([`QUARTERS`], both speed sets;
 /// `cargo xtask restitution-table --quarters`, for tables whose cells were checked at their
 /// centres only), and [`QUARTERS_HEADER`] in its header; how many flags were dropped (each
 /// side of each cell counts).
 pub fn check_quarters(
-    cfg: &BuildConfig,
+    (cfg, law): (&BuildConfig, &CrackLaw),
     table: &mut TableData,
     masters: &MasterTables,
     progress: &(dyn Fn(&str) + Sync),
-) -> Result<usize, ThresholdsError> {
-    let law = CrackLaw::new(table.k)?;
+) -> usize {
     let tables = RestitutionTables::from_parts(vec![Table::from_data(table)]);
-    let on = (cfg, &law, &tables, masters);
+    let on = (cfg, law, &tables, masters);
     let rows = &table.rows;
     let checks: Vec<(usize, Vec<(bool, bool)>)> = (0..rows.len().saturating_sub(1))
         .into_par_iter()
@@ -177,7 +177,7 @@ pub fn check_quarters(
             ));
         }
     }
-    Ok(lost)
+    lost
 }
 
 /// The cells (and the bouncing cells) of the rows marked in `rows_to_check` checked at their

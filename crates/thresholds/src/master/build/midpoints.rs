@@ -29,7 +29,6 @@
 use super::row::{interpolate, ratios, Kind};
 use super::{rel_diff, BuildConfig, Cache};
 use crate::master::format::{PieceData, RowData, TableData};
-use crate::ThresholdsError;
 use greenwood::CrackLaw;
 use numerics::format::number;
 use rayon::prelude::*;
@@ -63,9 +62,7 @@ pub(super) fn recheck_piece(
     if !d_lo.is_finite() || n < 2 {
         return d_lo;
     }
-    let nodes: Vec<(f64, [f64; 2])> = (0..n)
-        .map(|i| (piece.x[i], [piece.f_stick[i], piece.f_onset[i]]))
-        .collect();
+    let nodes = piece.nodes();
     for i in 1..n {
         let (a, b) = (nodes[i - 1].0, nodes[i].0);
         if end - b < d_lo * (1.0 - SAME_LIMIT) {
@@ -112,20 +109,20 @@ fn recheck_row(cfg: &BuildConfig, law: &CrackLaw, cache: &Cache, row: &RowData) 
     (r, moved[0] || moved[1])
 }
 
-/// `table` with every row's finest intervals checked again (see the module documentation);
-/// `progress` is told of every row whose limits moved.
+/// `table` (of `law`'s k) with every row's finest intervals checked again (see the module
+/// documentation); `progress` is told of every row whose limits moved.
 pub fn recheck_table(
     cfg: &BuildConfig,
+    law: &CrackLaw,
     table: &TableData,
     progress: &(dyn Fn(&str) + Sync),
-) -> Result<TableData, ThresholdsError> {
-    let law = CrackLaw::new(table.k)?;
+) -> TableData {
     let cache = Cache::default();
     let rows: Vec<RowData> = table
         .rows
         .par_iter()
         .map(|row| {
-            let (r, moved) = recheck_row(cfg, &law, &cache, row);
+            let (r, moved) = recheck_row(cfg, law, &cache, row);
             if moved {
                 progress(&format!(
                     "k = {}, row y = {}: vouched to x = {} / {} / strip d = {} (was {} / {} / {})",
@@ -149,10 +146,10 @@ pub fn recheck_table(
         "midpoints: every finest interval inside a piece's vouched range checked again at its midpoint to {}, the range ended at the first that fails (cargo xtask master-table --part midpoints, on the table of commit {built})",
         number(cfg.tol)
     ));
-    Ok(TableData {
+    TableData {
         k: table.k,
         header,
         rows,
         cells: table.cells.clone(),
-    })
+    }
 }

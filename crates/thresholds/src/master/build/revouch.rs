@@ -79,9 +79,7 @@ fn extend_piece(on: &Checker, pass: Pass, y: f64, end: f64, piece: &PieceData, v
     if !d_lo.is_finite() || n < 2 {
         return d_lo;
     }
-    let nodes: Vec<(f64, [f64; 2])> = (0..n)
-        .map(|i| (piece.x[i], [piece.f_stick[i], piece.f_onset[i]]))
-        .collect();
+    let nodes = piece.nodes();
     // the last vouched node (x increasing: the distance to the end decreasing)
     let Some(first) = nodes
         .iter()
