@@ -53,7 +53,7 @@ fn main() {
     while cases.len() < n {
         let p = draw(&mut rng, false);
         let k = if own {
-            ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+            rng.pick(&ks)
         } else {
             rng.restitution_k()
         };

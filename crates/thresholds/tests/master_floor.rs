@@ -35,7 +35,7 @@ fn the_node_floor_is_below_the_reference_search() {
         let x = -1.5 + 3.8 * rng.next();
         let y = -5.6 + 2.6 * rng.next();
         let k = if rng.next() < 0.5 {
-            ks[((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+            rng.pick(&ks)
         } else {
             rng.log_uniform(0.005, 0.05)
         };

@@ -23,6 +23,11 @@ impl Rng {
         lo * (hi / lo).powf(self.next())
     }
 
+    /// One of `ks` at random (a table's own k).
+    pub fn pick(&mut self, ks: &[f64]) -> f64 {
+        ks[((self.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+    }
+
     /// A k the restitution tables answer: log-uniform over their k range once their k cells
     /// are built ([`RestitutionTables::k_checked`]), else one of their own k.
     #[allow(dead_code)] // the restitution tables' example and test use it, the master tables' not
@@ -32,7 +37,7 @@ impl Rng {
         if tables.k_checked() {
             self.log_uniform(ks[0], ks[ks.len() - 1])
         } else {
-            ks[((self.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+            self.pick(ks)
         }
     }
 
@@ -46,7 +51,7 @@ impl Rng {
             self.log_uniform(lo, hi)
         } else {
             let ks = tables.table_k();
-            ks[((self.next() * ks.len() as f64) as usize).min(ks.len() - 1)]
+            self.pick(ks)
         }
     }
 }

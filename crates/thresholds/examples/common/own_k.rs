@@ -12,8 +12,7 @@ pub fn draw(rng: &mut Rng, n: usize, xs: (f64, f64), ys: (f64, f64), ks: &[f64])
         .map(|_| {
             let x = xs.0 + (xs.1 - xs.0) * rng.next();
             let y = ys.0 + (ys.1 - ys.0) * rng.next();
-            let i = ((rng.next() * ks.len() as f64) as usize).min(ks.len() - 1);
-            [x, y, ks[i]]
+            [x, y, rng.pick(ks)]
         })
         .collect()
 }

@@ -17,8 +17,8 @@
 //! x_s is where F reaches [`F_TOP`], x_on where F_on does. A piece is vouched for where its
 //! distance to its end is at least its `d_lo` (`inf`: nowhere). A cell is vouched for in plain
 //! x (rows interpolated at the same x) up to `x_hi`, and at a fixed distance to the end (the
-//! end interpolated in y) from `d_lo` up to [`SHEARED_REACH`] (the checks reach no farther). The optional `d_lb` (`cargo xtask master-table --part
-//! bounds`; absent: `d_lo`) reach closer to the end for lower bounds only: there the
+//! end interpolated in y) from `d_lo` up to [`SHEARED_REACH`] (the checks reach no farther).
+//! The optional `d_lb` (`cargo xtask master-table --part bounds`; absent: `d_lo`) reach closer to the end for lower bounds only: there the
 //! interpolation was checked against the exact nodes but the default search strays from them
 //! by more than the tables promise, so the tables answer only "above the search limit" from it
 //! (`MasterTables::ratios`, `BOUND_MARGIN`).

@@ -21,29 +21,17 @@
 //! halved in an earlier round and never checked again; the range ends before those as long as
 //! the finest failure still fails with the final nodes (every committed row vouched past a
 //! change of kind of its nodes did: `tests/master_own_k.rs`), and a failure the build met with
-//! earlier nodes but that passes with the final ones is not counted here. Where a limit moves, the piece's lower-bound limit
-//! (`d_lb`, which `--part bounds` reached from the old limit) is dropped. The cells and the k
-//! checks keep theirs: an answer takes the smallest of the rows', the cell's and the k check's
-//! limits, so a row's new limit bounds them all.
+//! earlier nodes but that passes with the final ones is not counted here. Where a limit moves,
+//! the piece's lower-bound limit (`d_lb`, which `--part bounds` reached from the old limit) is
+//! dropped. The cells and the k checks keep theirs: an answer takes the smallest of the rows',
+//! the cell's and the k check's limits, so a row's new limit bounds them all.
 
-use super::row::{interpolate, ratios, Kind};
-use super::{rel_diff, BuildConfig, Cache};
+use super::row::{interpolate, ratios, splittable, Kind};
+use super::{rel_diff, BuildConfig, Cache, SAME_LIMIT};
 use crate::master::format::{PieceData, RowData, TableData};
 use greenwood::CrackLaw;
 use numerics::format::number;
 use rayon::prelude::*;
-
-/// A node whose distance to the end is at least `d_lo` to this (relative) is inside the vouched
-/// range (the limits are node distances, written to the bit).
-const SAME_LIMIT: f64 = 1e-12;
-
-/// Whether the interval `[a, b]` (x) of a piece ending at `end` is of the finest width the build
-/// halves to (neither coordinate coarse: `row.rs` halves while either is).
-fn finest(cfg: &BuildConfig, end: f64, a: f64, b: f64) -> bool {
-    let coarse_x = b - a > cfg.min_x_step * 1.5;
-    let coarse_u = (end - a).ln() - (end - b).ln() > cfg.min_u_step * 1.5;
-    !(coarse_x || coarse_u)
-}
 
 /// The vouched limit (`d_lo`) of ratio `v` of `piece` (ending at `end`, on the row at `y`) once
 /// its finest intervals inside the vouched range are checked again: the distance to the end of
@@ -68,7 +56,7 @@ pub(super) fn recheck_piece(
         if end - b < d_lo * (1.0 - SAME_LIMIT) {
             break;
         }
-        if !finest(cfg, end, a, b) {
+        if splittable(cfg, end, a, b) {
             continue;
         }
         let u_mid = 0.5 * ((end - a).ln() + (end - b).ln());

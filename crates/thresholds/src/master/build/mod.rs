@@ -383,6 +383,11 @@ pub fn agrees(cfg: &BuildConfig, theirs: Option<f64>, ours: f64) -> bool {
     rel_diff(theirs, Some(ours)) <= tol
 }
 
+/// Two limits closer than this (relative) are the same: the limits are node distances, which
+/// the text form keeps to the bit (a cell's limit equal to its rows' old one had every check
+/// pass down to it; a node at a piece's limit is inside its vouched range).
+pub(super) const SAME_LIMIT: f64 = 1e-12;
+
 /// The relative difference of two ratios (infinite when either is missing).
 pub fn rel_diff(a: Option<f64>, b: Option<f64>) -> f64 {
     match (a, b) {

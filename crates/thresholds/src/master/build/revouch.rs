@@ -30,7 +30,10 @@
 
 use super::cells::{last_passing, sheared_checks, Checker};
 use super::row::interpolate;
-use super::{agrees, default_search, default_search_at_least, rel_diff, BuildConfig, Cache, Point};
+use super::{
+    agrees, default_search, default_search_at_least, rel_diff, BuildConfig, Cache, Point,
+    SAME_LIMIT,
+};
 use crate::master::ends::EndCurves;
 use crate::master::format::{CellData, EndsData, PieceData, RowData, TableData};
 use crate::master::interp::stencil_start;
@@ -38,10 +41,6 @@ use crate::ThresholdsError;
 use greenwood::CrackLaw;
 use numerics::format::number;
 use rayon::prelude::*;
-
-/// Two limits closer than this (relative) are the same: a cell's limit equal to its rows' old
-/// one had every check pass down to it (the text form keeps limits to the bit).
-const SAME_LIMIT: f64 = 1e-12;
 
 /// Which limit a pass moves towards the ends.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -45,6 +45,14 @@ pub(super) fn ratios(p: Point, kind: Kind) -> Option<[f64; 2]> {
     }
 }
 
+/// Whether the interval `[a, b]` (x) of a piece ending at `end` is still halved: while either
+/// coordinate is coarse, far from the end x ([`BuildConfig::min_x_step`]), near it u
+/// ([`BuildConfig::min_u_step`]); else it is of the finest width.
+pub(super) fn splittable(cfg: &BuildConfig, end: f64, a: f64, b: f64) -> bool {
+    let u = |x: f64| (end - x).ln();
+    b - a > cfg.min_x_step * 1.5 || u(a) - u(b) > cfg.min_u_step * 1.5
+}
+
 /// The nodes of a piece: `(x, [F, F_on])`, increasing in x.
 type Nodes = Vec<(f64, [f64; 2])>;
 
@@ -103,10 +111,8 @@ fn piece(
                 }
             }
             let ok = !bad[0] && !bad[1];
-            // halved while either coordinate is coarse: far from the end x, near it u
-            let splittable = b - a > cfg.min_x_step * 1.5 || u(a) - u(b) > cfg.min_u_step * 1.5;
             match exact {
-                Some(e) if !ok && splittable => added.push((mid, e)),
+                Some(e) if !ok && splittable(cfg, end, a, b) => added.push((mid, e)),
                 _ if !ok => {
                     for v in 0..2 {
                         if bad[v] {
