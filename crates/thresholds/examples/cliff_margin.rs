@@ -17,7 +17,7 @@
 
 use rayon::prelude::*;
 use thresholds::restitution::{RestitutionTables, CLIFF_MARGIN};
-use thresholds::{sticking_thresholds, Collider, CrackLaw, MasterTables, SearchOptions};
+use thresholds::{Collider, CrackLaw};
 
 #[path = "common/domain.rs"]
 #[allow(dead_code)] // the example of the master tables reads the rest
@@ -36,7 +36,6 @@ fn main() {
     let own = rest.iter().any(|a| a == "own");
     let seed = std::env::var("CLIFF_SEED").map_or(4242, |s| s.parse().unwrap());
     let tables = RestitutionTables::standard();
-    let ends = MasterTables::standard().ends().unwrap();
     let mut rng = Rng(seed);
     // (point, k, V_in, distance to the cliff in x, V_stick)
     let mut cases = Vec::with_capacity(n);
@@ -47,22 +46,16 @@ fn main() {
         } else {
             rng.restitution_k()
         };
-        let d = p.contact.dimensionless(p.t_vis);
-        let (x, y) = (d.c_d.log10(), p.contact.drag_crack_product().log10());
-        let Some(end) = ends.at(y, k) else { continue };
-        let dist = end.x_s - x;
+        let Some(dist) = p.below_cliff(k) else {
+            continue;
+        };
         if !(dist > 0.0 && dist < BANDS[BANDS.len() - 1]) {
             continue;
         }
         let law = CrackLaw::new(k).unwrap();
-        let opts = SearchOptions::default();
-        let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {
+        let Some((vs, von, v_max)) = p.bouncing_thresholds(&law) else {
             continue;
         };
-        let (Some(vs), Some(von)) = (th.v_stick, th.v_double_onset) else {
-            continue;
-        };
-        let v_max = opts.v_max_for(p.contact.v_stick_jkr());
         let v_in = match mode.as_str() {
             "near" => vs * rng.log_uniform(1e-4, 1.0).exp(),
             "double" => domain::impact_speed(&mut rng, vs, von, v_max),

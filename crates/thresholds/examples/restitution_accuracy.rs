@@ -58,14 +58,9 @@ fn main() {
             rng.restitution_k()
         };
         let law = CrackLaw::new(k).unwrap();
-        let opts = SearchOptions::default();
-        let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {
+        let Some((vs, von, v_max)) = p.bouncing_thresholds(&law) else {
             continue;
         };
-        let (Some(vs), Some(von)) = (th.v_stick, th.v_double_onset) else {
-            continue;
-        };
-        let v_max = opts.v_max_for(p.contact.v_stick_jkr());
         let v_in = if wide {
             rng.log_uniform(0.5 * vs, (100.0 * vs).min(v_max))
         } else {

@@ -8,8 +8,8 @@
 
 use thresholds::restitution::{collision, CLIFF_MARGIN, ONSET_MARGIN};
 use thresholds::{
-    sticking_thresholds, Collider, Contact, CrackLaw, Geometry, MasterTables, Material,
-    RestitutionTables, SearchOptions, SolverOptions, ThresholdMethod,
+    sticking_thresholds, Collider, Contact, CrackLaw, Geometry, Material, RestitutionTables,
+    SearchOptions, SolverOptions, ThresholdMethod,
 };
 
 #[path = "../examples/common/domain.rs"]
@@ -72,10 +72,8 @@ fn random_grain(
         return None;
     }
     let law = CrackLaw::new(rng.restitution_k()).unwrap();
-    let opts = SearchOptions::default();
-    let th = sticking_thresholds(&p.contact, &law, p.t_vis, &opts).ok()?;
-    let v_max = opts.v_max_for(p.contact.v_stick_jkr());
-    Some((p, law, th.v_stick?, th.v_double_onset?, v_max))
+    let (vs, von, v_max) = p.bouncing_thresholds(&law)?;
+    Some((p, law, vs, von, v_max))
 }
 
 /// Collisions of `n` random grains ([`random_grain`], screened by `keep`), each at the impact
@@ -363,7 +361,6 @@ fn from_the_cliff_margin_to_0_05_the_tables_agree_with_the_ode() {
         )
     };
     let tables = RestitutionTables::standard();
-    let ends = MasterTables::standard().ends().unwrap();
     let mut rng = Rng(3005);
     let (mut tried, mut answered) = (0, 0);
     while tried < 150 {
@@ -373,21 +370,16 @@ fn from_the_cliff_margin_to_0_05_the_tables_agree_with_the_ode() {
         } else {
             rng.pick(tables.table_k())
         };
-        let d = p.contact.dimensionless(p.t_vis);
-        let (x, y) = (d.c_d.log10(), p.contact.drag_crack_product().log10());
-        let Some(end) = ends.at(y, k) else { continue };
-        if !(end.x_s - x >= CLIFF_MARGIN && end.x_s - x < 0.05) {
+        let Some(dist) = p.below_cliff(k) else {
+            continue;
+        };
+        if !(CLIFF_MARGIN..0.05).contains(&dist) {
             continue;
         }
         let law = CrackLaw::new(k).unwrap();
-        let opts = SearchOptions::default();
-        let Ok(th) = sticking_thresholds(&p.contact, &law, p.t_vis, &opts) else {
+        let Some((vs, von, v_max)) = p.bouncing_thresholds(&law) else {
             continue;
         };
-        let (Some(vs), Some(von)) = (th.v_stick, th.v_double_onset) else {
-            continue;
-        };
-        let v_max = opts.v_max_for(p.contact.v_stick_jkr());
         let v_in = if rng.next() < 0.5 {
             vs * rng.log_uniform(1e-4, 1.0).exp()
         } else {

@@ -3,7 +3,9 @@
 //! `tests/master_table.rs` (which holds them to the search there; it includes this file).
 
 use thresholds::restitution::RestitutionTables;
-use thresholds::{Contact, Geometry, MasterTables, Material, SearchOptions};
+use thresholds::{
+    sticking_thresholds, Contact, CrackLaw, Geometry, MasterTables, Material, SearchOptions,
+};
 
 /// SplitMix64: a small deterministic generator, so that a run is repeatable.
 pub struct Rng(pub u64);
@@ -74,7 +76,6 @@ impl Point {
     /// Where the master tables look the point up: x = log10 c_D, y = log10(c_D c_a) (from the
     /// product, as the library's answer takes it), and the default search limit as a ratio,
     /// f_max = v_max / V_stick,JKR.
-    #[allow(dead_code)] // the restitution tables' example and test do not look it up
     pub fn table_coordinates(&self) -> (f64, f64, f64) {
         let c_d = self.contact.drag_number(self.t_vis);
         let jkr = self.contact.v_stick_jkr();
@@ -84,6 +85,26 @@ impl Point {
             self.contact.drag_crack_product().log10(),
             f_max,
         )
+    }
+
+    /// The default search's V_stick and V_double_onset at `law`'s k and its search limit
+    /// v_max (m/s); `None` where the search refuses the point (c_a above 3e10) or nothing
+    /// bounces below the limit.
+    #[allow(dead_code)] // the master tables' example and tests do not collide
+    pub fn bouncing_thresholds(&self, law: &CrackLaw) -> Option<(f64, f64, f64)> {
+        let opts = SearchOptions::default();
+        let th = sticking_thresholds(&self.contact, law, self.t_vis, &opts).ok()?;
+        let v_max = opts.v_max_for(self.contact.v_stick_jkr());
+        Some((th.v_stick?, th.v_double_onset?, v_max))
+    }
+
+    /// How far below the cliff the point lies at `k`: x_s - x, with x_s the master tables' end
+    /// curve at (y, k); `None` next to the kink of the end curves.
+    #[allow(dead_code)] // only the restitution tables' example and test near the cliff ask
+    pub fn below_cliff(&self, k: f64) -> Option<f64> {
+        let (x, y, _) = self.table_coordinates();
+        let end = MasterTables::standard().ends()?.at(y, k)?;
+        Some(end.x_s - x)
     }
 }
 
