@@ -263,6 +263,14 @@ fn solve(
 /// (m/s, at least 0): the central value and the range `[t_vis_min, t_vis_max]` (Section 5.1:
 /// 0.04 ± 0.02 m/s for CO2 at 60 um).
 ///
+/// Near the JKR limit V_stick hardly depends on T_vis (CO2 at 60 um: d ln V_stick / d ln T_vis
+/// is 4e-3 at T_vis = 1e-12 s, 5e-4 at 1e-13 s, 6e-5 at 1e-14 s), and the fitted T_vis is only
+/// as sharp as the threshold: its relative error is the threshold's (up to 1e-5 from the
+/// master tables, about 1e-7 from the search) divided by that slope. Fits of the same V_stick
+/// by the tables and by the search then differ by percents to tens of percent in T_vis while
+/// V_stick at either agrees with the measured one to 1e-5; an uncertainty `v_stick_err` gives
+/// the range that matters.
+///
 /// # Example
 /// ```
 /// use thresholds::{fit_t_vis, Contact, CrackLaw, Geometry, Material, SearchOptions};
