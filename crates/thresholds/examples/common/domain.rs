@@ -1,6 +1,7 @@
 //! Random points over the domain of the "Instant everywhere" issue, drawn alike by
 //! `examples/table_accuracy.rs` (which measures the master tables there) and
-//! `tests/master_table.rs` (which holds them to the search there; it includes this file).
+//! `tests/master_table.rs` (which holds them to the search there; it includes this file), and
+//! by the restitution tables' examples and tests (with their thresholds and impact speeds).
 
 use thresholds::restitution::RestitutionTables;
 use thresholds::{
@@ -99,7 +100,7 @@ impl Point {
     }
 
     /// How far below the cliff the point lies at `k`: x_s - x, with x_s the master tables' end
-    /// curve at (y, k); `None` next to the kink of the end curves.
+    /// curve at (y, k); `None` next to the kink of the end curves or outside their grid.
     #[allow(dead_code)] // only the restitution tables' example and test near the cliff ask
     pub fn below_cliff(&self, k: f64) -> Option<f64> {
         let (x, y, _) = self.table_coordinates();

@@ -92,9 +92,10 @@ impl<'a> Stencil<'a> {
         }
         let j = interval(&t.ys, y);
         if checked {
-            // the cell of row j (to row j + 1) that holds x
+            // the cell of row j (to row j + 1) that holds x, at least the margin from the end
+            // of both its rows (below the kink the end moves by up to 0.5 in x a row step)
             let r = &t.rows[j];
-            if r.x_s - x < CLIFF_MARGIN {
+            if r.x_s.min(t.rows[j + 1].x_s) - x < CLIFF_MARGIN {
                 return None;
             }
             let u = (r.x_s - x).ln().min(r.u[r.u.len() - 1]);
