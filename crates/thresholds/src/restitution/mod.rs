@@ -98,17 +98,16 @@ pub fn channel_of(s: f64, f: f64, f_on: f64) -> Option<(bool, f64)> {
 
 /// Closer to the cliff than this (in x = log10 c_D, from the ends x_s of both rows of the cell
 /// that holds the point: below the kink the end moves by up to 0.5 in x a row step) the ODE
-/// answers:
-/// there the rebound just above V_stick changes fast with x and y (V_out is nearly flat in V_in
-/// and tiny), and the checks of a cell (at mid-y) do not hold for the whole cell. Measured
-/// with the cells checked at their quarters (1.2e5 random collisions within 0.05 of the cliff,
-/// random and the tables' own k, three kinds of impact speeds; a probe with no margin):
-/// closer than 0.03, 19 of 25 898 answers missed the ODE's e by 1.0e-4 to 1.9e-3 (the farthest
-/// at 0.0236 from x_s; k = 0.01, y = -1.3, sigma = 0.82: e = 7.8e-4 against 2.7e-3); from 0.03
-/// to 0.05, none of 40 073 by more than 5.3e-5 (another draw of 1.2e5 with this margin,
-/// `examples/cliff_margin.rs`: none of 31 714 by more than 4.9e-5). The margin was 0.05 while
-/// the cells were checked at their centres alone (misses up to 1.3e-3, 1.9e-3 to 3.9e-2 from
-/// the end then).
+/// answers: there the rebound just above V_stick changes fast with x and y (V_out is nearly
+/// flat in V_in and tiny), and the checks of a cell (at mid-y) do not hold for the whole cell.
+/// Measured with the cells checked at their quarters (1.2e5 random collisions within 0.05 of
+/// the cliff, random and the tables' own k, three kinds of impact speeds; a probe with no
+/// margin): closer than 0.03, 19 of 25 898 answers missed the ODE's e by 1.0e-4 to 1.9e-3 (the
+/// farthest at 0.0236 from x_s; k = 0.01, y = -1.3, sigma = 0.82: e = 7.8e-4 against 2.7e-3);
+/// from 0.03 to 0.05, none of 40 073 by more than 5.3e-5 (another draw of 1.2e5 with this
+/// margin, `examples/cliff_margin.rs`: none of 31 714 by more than 4.9e-5). The margin was 0.05
+/// while the cells were checked at their centres alone (misses up to 1.3e-3, 1.9e-3 to 3.9e-2
+/// from the end then).
 pub const CLIFF_MARGIN: f64 = 0.03;
 
 /// Two k closer than this (relative) are the same k.

@@ -35,10 +35,9 @@ pub const MIN_Y_STEP: f64 = 1.0 / 64.0;
 
 /// Whether the bouncing cells from row `r` to the next fail anywhere the tables would answer
 /// (at least [`CLIFF_MARGIN`] in x from the row's end; the committed tables were refined with
-/// the margin at 0.05, so a refinement now would add rows for cells 0.03-0.05 from the end). The
-/// double-collision channels next to
-/// the onset (nu = 0.99-0.998) miss by 6e-5 to 2e-3 with rows 1/16 apart as with rows 1/4
-/// apart: a finer row spacing does not help them.
+/// the margin at 0.05, so a refinement now would add rows for cells 0.03-0.05 from the end).
+/// The double-collision channels next to the onset (nu = 0.99-0.998) miss by 6e-5 to 2e-3 with
+/// rows 1/16 apart as with rows 1/4 apart: a finer row spacing does not help them.
 fn fails(r: &RowData) -> bool {
     r.cells
         .side(true)
