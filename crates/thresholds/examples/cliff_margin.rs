@@ -27,7 +27,7 @@ use domain::{draw, Rng};
 
 /// The bands of distance to the cliff (in x) reported, up to the margin of the restitution
 /// tables before their cells were checked at their quarters (0.05).
-const BANDS: [f64; 6] = [0.0, 0.005, 0.01, 0.02, 0.03, 0.05];
+const BANDS: [f64; 6] = [0.0, 0.005, 0.01, 0.02, 0.03, domain::OLD_CLIFF_MARGIN];
 
 fn main() {
     let mut args = std::env::args().skip(1);
@@ -58,7 +58,7 @@ fn main() {
             continue;
         };
         let v_in = match mode.as_str() {
-            "near" => vs * rng.log_uniform(1e-4, 1.0).exp(),
+            "near" => domain::just_above(&mut rng, vs),
             "double" => domain::impact_speed(&mut rng, vs, von, v_max),
             _ => rng.log_uniform(0.5 * vs, (100.0 * vs).min(v_max)),
         };

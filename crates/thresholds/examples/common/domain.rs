@@ -141,6 +141,19 @@ pub fn draw(rng: &mut Rng, answered: bool) -> Point {
     }
 }
 
+/// How far from the cliff (in x = log10 c_D) the restitution tables left every collision to
+/// the ODE before their cells were checked at their quarters: the old
+/// [`thresholds::restitution::CLIFF_MARGIN`].
+#[allow(dead_code)] // only the restitution tables' example and test near the cliff use it
+pub const OLD_CLIFF_MARGIN: f64 = 0.05;
+
+/// An impact speed (m/s) just above `v_stick` (m/s): sigma = ln(V_in / V_stick) log-uniform
+/// from 1e-4 to 1, where the rebound changes fast next to the cliff.
+#[allow(dead_code)] // only the restitution tables' example and test near the cliff use it
+pub fn just_above(rng: &mut Rng, v_stick: f64) -> f64 {
+    v_stick * rng.log_uniform(1e-4, 1.0).exp()
+}
+
 /// An impact speed (m/s) around the thresholds `v_stick` and `v_on` (m/s) up to `v_max`: half
 /// the time bouncing (ln(V_in/V_stick) log-uniform from 1e-4 to its largest), else a double
 /// collision (V_in log-uniform between V_on and V_stick).
