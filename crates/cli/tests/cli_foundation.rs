@@ -162,6 +162,30 @@ fn usage_errors_are_one_line() {
     assert!(out.contains("Usage: stickiness v-stick"), "{out}");
 }
 
+/// Every collision command states the collisions' range of k (0 < k <= 0.9, `dynamics::K_MAX`)
+/// whichever check refuses it; `crack-law` alone takes any k below 1.
+#[test]
+fn collision_commands_state_the_collisions_range_of_k() {
+    for k in ["0", "-0.1", "0.95", "1", "2", "nan"] {
+        for command in [
+            &["v-stick", "--t-vis", "1e-9"][..],
+            &["collide", "--t-vis", "1e-9", "--v-in", "0.01"],
+        ] {
+            let mut args = command.to_vec();
+            args.extend(["--k", k]);
+            let (code, _, err) = run(&args);
+            assert_eq!(code, 2, "{args:?}: {err}");
+            assert!(
+                err.contains("must be 0 < k <= 0.9 for a collision"),
+                "{args:?}: {err}"
+            );
+        }
+    }
+    let (code, _, err) = run(&["crack-law", "--k", "2", "--beta", "1"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--k = 2.0: must be 0 < k < 1"), "{err}");
+}
+
 /// The range of T_vis is each command's: `collide` needs T_vis > 0 (0 is no collision), the
 /// thresholds take 0 (the JKR limit); NaN and infinities are refused by all, and `collide
 /// --trajectory` leaves its file as it was when T_vis or V_in is bad input.

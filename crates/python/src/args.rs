@@ -162,9 +162,17 @@ impl<'a> Elements<'a> {
         Ok((c, warns))
     }
 
-    /// The crack law of element `i`'s k.
+    /// The crack law of element `i`'s k; a k outside the collisions' range is refused with that
+    /// range ([`thresholds::K_RANGE`]), not the crack law's wider 0 < k < 1.
     pub fn law(&self, i: usize) -> Result<&CrackLaw, Error> {
-        self.laws.get(self.k[i], i)
+        let k = self.k[i];
+        if !(k > 0.0 && k <= thresholds::K_MAX) {
+            return Err(Error::Input {
+                bad: OutOfRange::new("k", k, thresholds::K_RANGE, "dimensionless"),
+                index: i,
+            });
+        }
+        self.laws.get(k, i)
     }
 
     /// `f(i, contact of i)` of every element on all cores ([`crate::parallel::map`]), each with

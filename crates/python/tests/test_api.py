@@ -69,8 +69,14 @@ def test_bad_values_name_the_argument_and_element():
         st.jkr(CO2, radius=-1.0)
     with pytest.raises(ValueError, match=r"^t_vis\[0, 1\] = -1e-9: must be >= 0"):
         st.v_stick(CO2, radius=[60e-6, 30e-6], t_vis=[[1e-9, -1e-9]])
-    with pytest.raises(ValueError, match=r"^k = 1\.5: must be 0 < k < 1"):
+    # every function of a collision states the collisions' range of k, whichever check refuses it
+    with pytest.raises(ValueError, match=r"^k = 1\.5: must be 0 < k <= 0\.9 for a collision"):
         st.v_stick(CO2, t_vis=1e-9, k=1.5)
+    with pytest.raises(ValueError, match=r"^k = 0\.0: must be 0 < k <= 0\.9 for a collision"):
+        st.collide(CO2, 60e-6, 1e-9, 0.001, k=0.0)
+    # the crack law alone holds for any k below 1
+    with pytest.raises(ValueError, match=r"^k = 1\.5: must be 0 < k < 1"):
+        st.crack_speed(1.5, 1.0)
     # a collision needs k <= 0.9 (dynamics::K_MAX): the search refuses k = 0.95 by name
     with pytest.raises(ValueError, match=r"^k = 0\.95: must be 0 < k <= 0\.9 for a collision"):
         st.v_stick(CO2, t_vis=1e-9, k=0.95)
