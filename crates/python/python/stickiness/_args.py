@@ -117,9 +117,9 @@ def float_array(name: str, value: Any) -> np.ndarray:
     except Exception as e:  # ragged lists and the like
         raise TypeError(f"{name}: expected a number or an array of numbers ({e})") from None
     if a.dtype.kind not in "iuf":
-        raise TypeError(
-            f"{name}: expected real numbers, got {type(value).__name__} of dtype {a.dtype}"
-        )
+        what = {"U": "text", "S": "bytes", "b": "booleans", "c": "complex numbers",
+                "O": "objects", "M": "dates", "m": "time spans"}.get(a.dtype.kind, str(a.dtype))
+        raise TypeError(f"{name}: expected real numbers, got {what} ({value!r:.60})")
     return a.astype(np.float64, copy=False)
 
 
