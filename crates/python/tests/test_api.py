@@ -238,3 +238,23 @@ def test_warnings_point_at_the_callers_line():
         st.jkr(CO2, radius=60.0)
         st.v_stick(CO2, radius=60.0, t_vis=1e-9)
     assert [w.filename for w in caught] == [__file__, __file__]
+
+
+def test_results_as_data_frames():
+    """``to_frame()``: one row an element (flattened in C order), one column a field, the values
+    the attributes' own; a scalar call one row; a trajectory left out."""
+    pytest.importorskip("pandas")
+    t = np.geomspace(1e-10, 1e-8, 6).reshape(2, 3)
+    r = st.v_stick(CO2, 60e-6, t, k=[0.01, 0.02, 0.03])
+    df = r.to_frame()
+    assert len(df) == 6
+    assert list(df.columns) == ["v_stick", "v_double_onset", "v_stick_jkr", "no_bouncing_below",
+                                "t_vis", "v_max", "method"]
+    np.testing.assert_array_equal(df["v_stick"].to_numpy(), r.v_stick.ravel())
+    np.testing.assert_array_equal(df["t_vis"].to_numpy(), t.ravel())
+    assert list(df["method"]) == list(r.method.ravel())
+    one = st.collide(CO2, 60e-6, 1e-9, 0.01).to_frame()  # sticks: no contact time
+    assert len(one) == 1 and one["outcome"][0] == "sticking" and np.isnan(one["contact_time"][0])
+    traj = st.collide(CO2, 60e-6, 1e-9, 0.045, trajectory=True)
+    assert "trajectory" not in traj.to_frame().columns
+    assert len(st.jkr(CO2, [[1e-6, 2e-6], [3e-6, 4e-6]]).to_frame()) == 4

@@ -6,8 +6,8 @@ Fields hold a Python ``float`` (or ``str``) when the call's arguments were scala
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Dict, List, Optional, Union
+from dataclasses import dataclass, fields
+from typing import Any, Dict, List, Optional, Union
 
 import numpy as np
 
@@ -17,8 +17,48 @@ from ._args import FloatOrArray
 StrOrArray = Union[str, np.ndarray]
 
 
+class _Columns:
+    """What every result can do: give its fields as a table, one row an element."""
+
+    def to_frame(self) -> Any:
+        """The fields as a ``pandas.DataFrame``: one column a field (SI units, as the
+        attributes), one row an element of the call, flattened in C order (one row for a call
+        of scalars); ``None`` becomes NaN in float columns. A recorded ``trajectory`` is left
+        out (its arrays have one row a solver step).
+
+        Raises
+        ------
+        ImportError
+            pandas missing: ``pip install 'stickiness[infer]'`` (or pandas alone).
+
+        Examples
+        --------
+        >>> import stickiness as st
+        >>> df = st.v_stick("co2", [30e-6, 60e-6], 1e-9).to_frame()
+        >>> list(df.columns[:2]), len(df)
+        (['v_stick', 'v_double_onset'], 2)
+        """
+        try:
+            import pandas as pd  # type: ignore[import-untyped,unused-ignore]
+        except ImportError:
+            raise ImportError(
+                "to_frame needs pandas: pip install 'stickiness[infer]' (or pandas)"
+            ) from None
+        columns = {}
+        for f in fields(self):  # type: ignore[arg-type]
+            if f.name == "trajectory":
+                continue
+            value = getattr(self, f.name)
+            if value is None:
+                value = np.nan
+            elif isinstance(value, list):  # sticking criteria of an array call: str or None
+                value = np.array(value, dtype=object)
+            columns[f.name] = np.ravel(value)
+        return pd.DataFrame(columns)
+
+
 @dataclass(frozen=True)
-class JKR:
+class JKR(_Columns):
     """The JKR contact of two bodies (Arakawa & Krijt 2021, Sections 2.2, 5.1, 6).
 
     Attributes
@@ -52,7 +92,7 @@ class JKR:
 
 
 @dataclass(frozen=True)
-class Dimensionless:
+class Dimensionless(_Columns):
     """The two dimensionless numbers of a collision and the JKR time unit (Arakawa & Krijt 2021,
     Section 2.5, in the units of ``docs/model.md``).
 
@@ -72,7 +112,7 @@ class Dimensionless:
 
 
 @dataclass(frozen=True)
-class Collision:
+class Collision(_Columns):
     """One head-on collision (Sections 2.6, 4).
 
     Attributes
@@ -114,7 +154,7 @@ class Collision:
 
 
 @dataclass(frozen=True)
-class VStick:
+class VStick(_Columns):
     """The sticking thresholds (Sections 4.4, 5).
 
     Attributes
@@ -147,7 +187,7 @@ class VStick:
 
 
 @dataclass(frozen=True)
-class TVisFit:
+class TVisFit(_Columns):
     """Relaxation times reproducing a measured V_stick (Sections 5.1-5.2).
 
     Attributes
@@ -172,7 +212,7 @@ class TVisFit:
 
 
 @dataclass(frozen=True)
-class VFrag:
+class VFrag(_Columns):
     """The fragmentation velocity of aggregates, V_frag = 10 V_stick (Section 6).
 
     Attributes
