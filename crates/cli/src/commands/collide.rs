@@ -27,8 +27,9 @@ pub struct CollideArgs {
     pub t_end: Option<f64>,
     /// ode (default): integrate the collision; table: the outcome, e and V_out from the
     /// restitution tables (within 1e-4 of the ODE in e, microseconds) where they vouch for them,
-    /// the ODE elsewhere and with --trajectory or --t-end ("method" in the output says which;
-    /// a table answer has no contact time).
+    /// the ODE elsewhere (with BDF where the tables cover k: e within 1.3e-6 of --method ode)
+    /// and with --trajectory or --t-end ("method" in the output says which; a table answer has
+    /// no contact time).
     #[arg(long, value_enum, ignore_case = true, default_value = "ode")]
     pub method: CollideMethod,
 }

@@ -28,8 +28,8 @@ on Ctrl-C within about a second.
 
 Where a threshold does not exist, its value is NaN: ``v_stick`` (and ``v_double_onset``,
 ``v_frag``) when no collision bounces up to the search limit, which ``no_bouncing_below``
-then holds (NaN where bouncing was found); in arrays, ``contact_time`` of a sticking
-collision (``None`` for a single one) and of every collision the restitution tables answered
+then holds (NaN where bouncing was found); ``contact_time`` of a sticking collision (``None``
+for a single one) and of every other collision the restitution tables answered
 (``collide(..., method="table")``: they hold e and V_out only). No other result is ever NaN.
 
 Errors: bad input raises ``ValueError`` naming the argument and, for arrays, the element

@@ -55,10 +55,9 @@ def collide(
         contact time). ``'table'``: the outcome, e and V_out from the restitution tables, within
         1e-4 of the ODE in e, in microseconds, where they vouch for it (k from 0.005 to
         0.0504; not within a thin band at the cliff or the onset of double collisions; at most
-        1.3e4 V_stick; beyond the cliff, sticking below the search limit); the ODE elsewhere (there
-        with BDF, e within 1.3e-6 of the default integration at a third of its time), and with
-        ``trajectory`` or ``t_end``. The result's
-        ``method`` says which answered; a table answer has no contact time (NaN; None for a
+        1.3e4 V_stick; beyond the cliff, sticking below the search limit); the ODE elsewhere
+        (with BDF where the tables cover k: e within 1.3e-6 of ``'ode'`` at a third of its
+        time), and with ``trajectory`` or ``t_end``. The result's ``method`` says which answered; a table answer has no contact time (NaN; None for a
         sticking scalar, as from the ODE) or sticking criterion.
 
     Returns

@@ -23,8 +23,8 @@ class _Columns:
     def to_frame(self) -> Any:
         """The fields as a ``pandas.DataFrame``: one column a field (SI units, as the
         attributes), one row an element of the call, flattened in C order (one row for a call
-        of scalars); ``None`` becomes NaN in float columns. A recorded ``trajectory`` is left
-        out (its arrays have one row a solver step).
+        of scalars); a scalar call's ``contact_time`` of ``None`` becomes NaN, as in arrays. A
+        recorded ``trajectory`` is left out (its arrays have one row a solver step).
 
         Raises
         ------
@@ -49,7 +49,7 @@ class _Columns:
             if f.name == "trajectory":
                 continue
             value = getattr(self, f.name)
-            if value is None:
+            if f.name == "contact_time" and value is None:
                 value = np.nan
             elif isinstance(value, list):  # sticking criteria of an array call: str or None
                 value = np.array(value, dtype=object)
