@@ -245,13 +245,9 @@ pub struct KArgs {
 
 impl KArgs {
     /// Greenwood's crack law tabulated for this k; a k outside the collisions' range is refused
-    /// with that range ([`dynamics::K_RANGE`]), not the crack law's wider 0 < k < 1.
+    /// with that range ([`dynamics::collision_k`]), not the crack law's wider 0 < k < 1.
     pub fn crack_law(&self) -> Result<greenwood::CrackLaw, CliError> {
-        if !(self.k > 0.0 && self.k <= dynamics::K_MAX) {
-            let bad = numerics::OutOfRange::new("k", self.k, dynamics::K_RANGE, "dimensionless");
-            return Err(bad.into());
-        }
-        Ok(greenwood::CrackLaw::new(self.k)?)
+        Ok(greenwood::CrackLaw::new(dynamics::collision_k(self.k)?)?)
     }
 }
 

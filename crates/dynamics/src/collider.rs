@@ -30,6 +30,22 @@ pub const K_MAX: f64 = 0.9;
 pub const K_RANGE: &str =
     "0 < k <= 0.9 for a collision (the window 1/k - k of beta a contact crosses closes as k -> 1)";
 
+/// `k` (dimensionless) if a collision is integrated for it, 0 < k <= [`K_MAX`]; else the error
+/// stating [`K_RANGE`] (also for k that Greenwood's crack law alone would take, up to 1).
+///
+/// # Example
+/// ```
+/// assert_eq!(dynamics::collision_k(0.01), Ok(0.01));
+/// assert!(dynamics::collision_k(1.5).unwrap_err().to_string().contains("0 < k <= 0.9"));
+/// ```
+pub fn collision_k(k: f64) -> Result<f64, OutOfRange> {
+    if k > 0.0 && k <= K_MAX {
+        Ok(k)
+    } else {
+        Err(OutOfRange::new("k", k, K_RANGE, "dimensionless"))
+    }
+}
+
 /// The largest crack-speed number c_a (lambda) a collision is integrated at: at 1.5e10 a
 /// collision of 1 cm grains takes 2e5 steps, at 1.5e11 it does not end within the step budget
 /// of 2e6 (the crack must follow beta = 1 to 1e-11); V_stick has converged there to its
@@ -72,9 +88,7 @@ impl Collider {
             .into());
         }
         let law: CrackLaw = law.into();
-        if law.k() > K_MAX {
-            return Err(OutOfRange::new("k", law.k(), K_RANGE, "dimensionless").into());
-        }
+        collision_k(law.k())?;
         let scales = Scales::new(&contact);
         let params = scales.params(&contact, t_vis);
         if !params.c_d.is_finite() {

@@ -163,15 +163,9 @@ impl<'a> Elements<'a> {
     }
 
     /// The crack law of element `i`'s k; a k outside the collisions' range is refused with that
-    /// range ([`thresholds::K_RANGE`]), not the crack law's wider 0 < k < 1.
+    /// range ([`thresholds::collision_k`]), not the crack law's wider 0 < k < 1.
     pub fn law(&self, i: usize) -> Result<&CrackLaw, Error> {
-        let k = self.k[i];
-        if !(k > 0.0 && k <= thresholds::K_MAX) {
-            return Err(Error::Input {
-                bad: OutOfRange::new("k", k, thresholds::K_RANGE, "dimensionless"),
-                index: i,
-            });
-        }
+        let k = thresholds::collision_k(self.k[i]).map_err(|bad| Error::Input { bad, index: i })?;
         self.laws.get(k, i)
     }
 

@@ -18,10 +18,10 @@
 //! distance to its end is at least its `d_lo` (`inf`: nowhere). A cell is vouched for in plain
 //! x (rows interpolated at the same x) up to `x_hi`, and at a fixed distance to the end (the
 //! end interpolated in y) from `d_lo` up to [`SHEARED_REACH`] (the checks reach no farther).
-//! The optional `d_lb` (`cargo xtask master-table --part bounds`; absent: `d_lo`) reach closer to the end for lower bounds only: there the
-//! interpolation was checked against the exact nodes but the default search strays from them
-//! by more than the tables promise, so the tables answer only "above the search limit" from it
-//! (`MasterTables::ratios`, `BOUND_MARGIN`).
+//! The optional `d_lb` (`cargo xtask master-table --part bounds`; absent: `d_lo`) reach closer
+//! to the end for lower bounds only: there the interpolation was checked against the exact
+//! nodes but the default search strays from them by more than the tables promise, so the tables
+//! answer only "above the search limit" from it (`MasterTables::ratios`, `BOUND_MARGIN`).
 //!
 //! The end curves x_s(y, k) and x_on(y, k) on a uniform grid in y and ln k:
 //! ```text

@@ -137,9 +137,9 @@ fn flags_of(cells: &CellFlags, i: usize) -> (bool, bool) {
 /// The header line of a table whose cells [`check_quarters`] checked.
 pub const QUARTERS_HEADER: &str = "quarters: every vouched cell checked again at a quarter, half and three quarters of its interval (mid-y) at the centre's speeds and between every fourth pair of channels; a cell that missed is vouched no longer (cargo xtask restitution-table --quarters)";
 
-/// Each vouched cell of `table` (of `law`'s k) checked again at its quarters ([`QUARTERS`], both speed sets;
-/// `cargo xtask restitution-table --quarters`, for tables whose cells were checked at their
-/// centres only), and [`QUARTERS_HEADER`] in its header; how many flags were dropped (each
+/// Each vouched cell of `table` (of `law`'s k) checked again at its quarters ([`QUARTERS`],
+/// both speed sets; `cargo xtask restitution-table --quarters`, for tables whose cells were
+/// checked at their centres only), and [`QUARTERS_HEADER`] in its header; how many flags were dropped (each
 /// side of each cell counts).
 pub fn check_quarters(
     (cfg, law): (&BuildConfig, &CrackLaw),
