@@ -152,7 +152,7 @@ impl Grid {
     }
 
     /// Checks every axis before any work: each non-empty, radii and T_vis finite and > 0
-    /// (T_vis >= 0), 0 < k <= 0.9 ([`dynamics::K_MAX`]), gamma_SV > 0, and every material with its
+    /// (T_vis >= 0), 0 < k <= 0.9 ([`dynamics::collision_k`]), gamma_SV > 0, and every material with its
     /// gamma_SV valid.
     pub fn validate(&self) -> Result<(), OutOfRange> {
         if self.materials.is_empty() {
@@ -196,7 +196,7 @@ impl Grid {
         check_axis(
             "k",
             &self.k,
-            |v| v > 0.0 && v <= dynamics::K_MAX,
+            |v| dynamics::collision_k(v).is_ok(),
             dynamics::K_RANGE,
             "dimensionless",
         )?;
