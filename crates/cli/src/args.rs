@@ -37,7 +37,8 @@ pub struct BulkOverrides {
     /// Override Young's modulus E (Pa, > 0).
     #[arg(long, allow_hyphen_values = true)]
     pub young: Option<f64>,
-    /// Override the Poisson ratio nu (dimensionless, -1 < nu < 0.5).
+    /// Override the Poisson ratio nu (dimensionless, -1 < nu < 0.5; nonzero for a collision,
+    /// whose drag is A = T_vis/nu^2).
     #[arg(long, allow_hyphen_values = true)]
     pub poisson: Option<f64>,
     /// Override the density rho (kg/m^3, > 0).

@@ -186,6 +186,28 @@ fn collision_commands_state_the_collisions_range_of_k() {
     assert!(err.contains("--k = 2.0: must be 0 < k < 1"), "{err}");
 }
 
+/// A Poisson ratio of 0 is named as such by every collision command (the drag A = T_vis/nu^2 of
+/// Section 2.3 is infinite there), not blamed on T_vis; `jkr` takes it (no drag in JKR).
+#[test]
+fn collision_commands_name_a_poisson_ratio_of_zero() {
+    for command in [
+        &["v-stick", "--t-vis", "1e-9"][..],
+        &["collide", "--t-vis", "1e-9", "--v-in", "0.01"],
+        &["fit-t-vis", "--v-stick", "0.04"],
+    ] {
+        let mut args = command.to_vec();
+        args.extend(["--poisson", "0"]);
+        let (code, _, err) = run(&args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(
+            err.contains("--poisson = 0") && err.contains("nonzero for a collision"),
+            "{args:?}: {err}"
+        );
+    }
+    let (code, _, err) = run(&["jkr", "--poisson", "0"]);
+    assert_eq!(code, 0, "{err}");
+}
+
 /// The range of T_vis is each command's: `collide` needs T_vis > 0 (0 is no collision), the
 /// thresholds take 0 (the JKR limit); NaN and infinities are refused by all, and `collide
 /// --trajectory` leaves its file as it was when T_vis or V_in is bad input.

@@ -24,7 +24,8 @@ pub struct Material {
     pub gamma_sv: f64,
     /// (Relaxed) Young's modulus E (Pa).
     pub young: f64,
-    /// Poisson ratio nu (dimensionless, -1 < nu < 0.5).
+    /// Poisson ratio nu (dimensionless, -1 < nu < 0.5; a collision needs nu != 0, its drag being
+    /// A = T_vis/nu^2, Section 2.3).
     pub poisson: f64,
     /// Material density rho (kg/m^3).
     pub density: f64,

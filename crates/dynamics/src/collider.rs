@@ -46,6 +46,12 @@ pub fn collision_k(k: f64) -> Result<f64, OutOfRange> {
     }
 }
 
+/// What a collision needs of the Poisson ratio besides the material's -1 < nu < 0.5: the
+/// viscoelastic drag's A = T_vis/nu^2 (Section 2.3) is infinite at nu = 0, so the drag number
+/// c_D is too (an elastic material of nu = 0 still has its JKR quantities).
+const POISSON_FOR_DRAG: &str = "-1 < poisson < 0.5 and nonzero for a collision (the drag's \
+     A = T_vis/nu^2 of Section 2.3 is infinite at nu = 0; |nu| above about 1e-150)";
+
 /// The largest crack-speed number c_a (lambda) a collision is integrated at: at 1.5e10 a
 /// collision of 1 cm grains takes 2e5 steps, at 1.5e11 it does not end within the step budget
 /// of 2e6 (the crack must follow beta = 1 to 1e-11); V_stick has converged there to its
@@ -92,9 +98,20 @@ impl Collider {
         let scales = Scales::new(&contact);
         let params = scales.params(&contact, t_vis);
         if !params.c_d.is_finite() {
+            let per_second = scales.params(&contact, 1.0).c_d;
+            if !per_second.is_finite() {
+                // the drag A = T_vis/nu^2 (Section 2.3) is infinite at every T_vis: nu = 0, or
+                // so small that 1/nu^2 overflows
+                return Err(OutOfRange::new(
+                    "poisson",
+                    contact.material().poisson,
+                    POISSON_FOR_DRAG,
+                    "dimensionless",
+                )
+                .into());
+            }
             // c_D grows as T_vis: T_vis too large for f64 (far beyond the no-bouncing cliff,
             // where every collision sticks)
-            let per_second = scales.params(&contact, 1.0).c_d;
             return Err(OutOfRange::new(
                 "t_vis",
                 t_vis,

@@ -16,7 +16,8 @@ use std::path::PathBuf;
 /// young : float or Quantity
 ///     Young's modulus E (Pa, > 0).
 /// poisson : float
-///     Poisson ratio nu (dimensionless, -1 < nu < 0.5).
+///     Poisson ratio nu (dimensionless, -1 < nu < 0.5; nonzero for a collision, whose drag is
+///     A = T_vis/nu^2, Section 2.3).
 /// density : float or Quantity
 ///     Density rho (kg/m^3, > 0).
 ///
