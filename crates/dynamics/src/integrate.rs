@@ -157,6 +157,7 @@ impl Collider {
             x_tol: CROSSING_ULPS * f64::EPSILON * s1.abs(),
             max_iter: CROSSING_ITERATIONS,
             guard: 0.0,
+            ..Illinois::default()
         };
         let root = illinois(
             |s| state(s).map(|u| g(&u)).ok_or(()),

@@ -12,8 +12,15 @@
 /// Settings of [`illinois`].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Illinois {
-    /// Stop when the bracket is at most this wide (same unit as x).
+    /// Stop when the bracket is at most this wide (same unit as x) and `f_tol` is met.
     pub x_tol: f64,
+    /// ... and the smallest `|f|` evaluated is at most this (infinite: the bracket alone
+    /// decides). Where f is steep a bracket of `x_tol` can hold values of f far apart; the
+    /// search then goes on until some point has `|f| <= f_tol` or the bracket is `x_floor`.
+    pub f_tol: f64,
+    /// Stop when the bracket is at most this wide, whatever `|f|` (same unit as x): the bound
+    /// on the work where f is noisy at the level of `f_tol`.
+    pub x_floor: f64,
     /// Stop after this many evaluations; the result is then the best end of the bracket.
     pub max_iter: usize,
     /// Keep each trial point at least this fraction of the bracket width away from its ends
@@ -22,10 +29,13 @@ pub struct Illinois {
 }
 
 impl Default for Illinois {
-    /// `x_tol = 1e-12`, 200 evaluations, no guard.
+    /// `x_tol = 1e-12` (the bracket alone decides: `f_tol` infinite, `x_floor` 0), 200
+    /// evaluations, no guard.
     fn default() -> Self {
         Self {
             x_tol: 1e-12,
+            f_tol: f64::INFINITY,
+            x_floor: 0.0,
             max_iter: 200,
             guard: 0.0,
         }
@@ -80,7 +90,8 @@ pub fn illinois<E>(
     }
     let mut side = 0i8;
     for _ in 0..opts.max_iter {
-        if hi - lo <= opts.x_tol {
+        let width = hi - lo;
+        if (width <= opts.x_tol && best_f <= opts.f_tol) || width <= opts.x_floor {
             break;
         }
         let secant = if f_lo.is_finite() && f_hi.is_finite() {
@@ -145,6 +156,40 @@ mod tests {
         let r = illinois(wall, (0.0, -1.0), (1.0, f64::INFINITY), &opts).unwrap();
         assert!((r.best - 2f64.ln()).abs() < 1e-12);
         assert!(r.lo - 1e-12 <= 2f64.ln() && 2f64.ln() <= r.hi + 1e-12);
+    }
+
+    /// A steep f (e^(1000 x) - 2, root ln 2 / 1000): a bracket of 1e-5 holds values of f a
+    /// hundredth apart; with `f_tol` the search goes on until some point is within it.
+    #[test]
+    fn f_tol_goes_on_where_f_is_steep() {
+        let steep = |x: f64| Ok::<f64, ()>((1000.0 * x).exp() - 2.0);
+        let root = 2f64.ln() / 1000.0;
+        let (lo, hi) = ((0.0, -1.0), (0.001, 1f64.exp() - 2.0));
+        let coarse = Illinois {
+            x_tol: 1e-5,
+            ..Illinois::default()
+        };
+        let r = illinois(steep, lo, hi, &coarse).unwrap();
+        assert!(r.hi - r.lo <= 1e-5);
+        let tight = Illinois {
+            f_tol: 1e-9,
+            x_floor: 1e-15,
+            ..coarse
+        };
+        let t = illinois(steep, lo, hi, &tight).unwrap();
+        assert!(
+            steep(t.best).unwrap().abs() <= 1e-9,
+            "{}",
+            steep(t.best).unwrap()
+        );
+        assert!((t.best - root).abs() < 1e-12);
+        // a floor above the bracket f_tol needs stops the search there
+        let floored = Illinois {
+            x_floor: 1e-5,
+            ..tight
+        };
+        let f = illinois(steep, lo, hi, &floored).unwrap();
+        assert!(f.hi - f.lo <= 1e-5);
     }
 
     #[test]

@@ -314,7 +314,9 @@ def fit_t_vis(
     and the fitted T_vis is only as sharp as the threshold (1e-5 from the tables, about 1e-7
     from the search) divided by that slope: ``method="table"`` and ``method="search"`` may
     then differ by percents to tens of percent in T_vis while both reproduce the measured
-    V_stick to 1e-5; ``v_stick_err`` gives the range that matters.
+    V_stick to 1e-5; ``v_stick_err`` gives the range that matters. The T_vis returned is the
+    one tried whose V_stick came closest to V: within ``rel_tol`` of it (1e-6 by default), also
+    next to the no-bouncing cliff, where V_stick climbs steeply with T_vis.
 
     {broadcast}
 

@@ -115,6 +115,7 @@ pub fn x_s(cfg: &BuildConfig, law: &CrackLaw, y: f64, guess: Option<f64>) -> Opt
         x_tol: ROOT_TOL,
         max_iter: 120,
         guard: 0.02,
+        ..Illinois::default()
     };
     let r = illinois(|x| f(x).ok_or(()), (a, fa), (b, fb), &opts).ok()?;
     (r.hi - r.lo <= 10.0 * ROOT_TOL).then_some(r.midpoint())
