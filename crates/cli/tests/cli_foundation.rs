@@ -186,8 +186,9 @@ fn collision_commands_state_the_collisions_range_of_k() {
     assert!(err.contains("--k = 2.0: must be 0 < k < 1"), "{err}");
 }
 
-/// A Poisson ratio of 0 is named as such by every collision command (the drag A = T_vis/nu^2 of
-/// Section 2.3 is infinite there), not blamed on T_vis; `jkr` takes it (no drag in JKR).
+/// A Poisson ratio of 0 is named as such by every collision command and by a sweep of any
+/// T_vis > 0 (the drag A = T_vis/nu^2 of Section 2.3 is infinite there), not blamed on T_vis;
+/// `jkr` takes it (no drag in JKR).
 #[test]
 fn collision_commands_name_a_poisson_ratio_of_zero() {
     for command in [
@@ -205,6 +206,28 @@ fn collision_commands_name_a_poisson_ratio_of_zero() {
         );
     }
     let (code, _, err) = run(&["jkr", "--poisson", "0"]);
+    assert_eq!(code, 0, "{err}");
+    // a sweep refuses it before any work (no file made); at T_vis = 0 alone (the JKR limit,
+    // no collision) it runs
+    let dir = TempDir::new("sweep-poisson");
+    let out = dir.join("s.csv");
+    let o = out.to_str().unwrap();
+    let (code, _, err) = run(&[
+        "sweep",
+        "--t-vis",
+        "1e-9,1e-8",
+        "--poisson",
+        "0",
+        "--out",
+        o,
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains("--poisson = 0") && err.contains("nonzero for a collision"),
+        "{err}"
+    );
+    assert!(!out.exists());
+    let (code, _, err) = run(&["sweep", "--t-vis", "0", "--poisson", "0", "--out", o]);
     assert_eq!(code, 0, "{err}");
 }
 

@@ -48,9 +48,32 @@ pub fn collision_k(k: f64) -> Result<f64, OutOfRange> {
 
 /// What a collision needs of the Poisson ratio besides the material's -1 < nu < 0.5: the
 /// viscoelastic drag's A = T_vis/nu^2 (Section 2.3) is infinite at nu = 0, so the drag number
-/// c_D is too (an elastic material of nu = 0 still has its JKR quantities).
+/// c_D is too (an elastic material of nu = 0 still has its JKR quantities); 1/nu^2 overflows
+/// below |nu| = 7.5e-155.
 const POISSON_FOR_DRAG: &str = "-1 < poisson < 0.5 and nonzero for a collision (the drag's \
-     A = T_vis/nu^2 of Section 2.3 is infinite at nu = 0; |nu| above about 1e-150)";
+     A = T_vis/nu^2 of Section 2.3 is infinite at nu = 0; |nu| above about 1e-154)";
+
+/// The Poisson ratio `nu` (dimensionless) if a collision is integrated for it: 1/nu^2 finite,
+/// so that the drag A = T_vis/nu^2 is; else the error naming `poisson` with that range. The
+/// material's own range, -1 < nu < 0.5, is [`contact::Material::validate`]'s.
+///
+/// # Example
+/// ```
+/// assert_eq!(dynamics::collision_poisson(0.25), Ok(0.25));
+/// assert!(dynamics::collision_poisson(0.0).unwrap_err().to_string().contains("nonzero"));
+/// ```
+pub fn collision_poisson(nu: f64) -> Result<f64, OutOfRange> {
+    if (1.0 / (nu * nu)).is_finite() {
+        Ok(nu)
+    } else {
+        Err(OutOfRange::new(
+            "poisson",
+            nu,
+            POISSON_FOR_DRAG,
+            "dimensionless",
+        ))
+    }
+}
 
 /// The largest crack-speed number c_a (lambda) a collision is integrated at: at 1.5e10 a
 /// collision of 1 cm grains takes 2e5 steps, at 1.5e11 it does not end within the step budget
@@ -95,23 +118,13 @@ impl Collider {
         }
         let law: CrackLaw = law.into();
         collision_k(law.k())?;
+        collision_poisson(contact.material().poisson)?;
         let scales = Scales::new(&contact);
         let params = scales.params(&contact, t_vis);
         if !params.c_d.is_finite() {
-            let per_second = scales.params(&contact, 1.0).c_d;
-            if !per_second.is_finite() {
-                // the drag A = T_vis/nu^2 (Section 2.3) is infinite at every T_vis: nu = 0, or
-                // so small that 1/nu^2 overflows
-                return Err(OutOfRange::new(
-                    "poisson",
-                    contact.material().poisson,
-                    POISSON_FOR_DRAG,
-                    "dimensionless",
-                )
-                .into());
-            }
             // c_D grows as T_vis: T_vis too large for f64 (far beyond the no-bouncing cliff,
             // where every collision sticks)
+            let per_second = scales.params(&contact, 1.0).c_d;
             return Err(OutOfRange::new(
                 "t_vis",
                 t_vis,

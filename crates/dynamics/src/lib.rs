@@ -52,7 +52,9 @@ pub mod rebound;
 pub mod scales;
 pub mod sticking;
 
-pub use collider::{collision_k, Collider, EPS, K_MAX, K_RANGE, MAX_CRACK_SPEED_NUMBER};
+pub use collider::{
+    collision_k, collision_poisson, Collider, EPS, K_MAX, K_RANGE, MAX_CRACK_SPEED_NUMBER,
+};
 pub use error::DynamicsError;
 pub use options::{
     auto_explicit_step_budget, Backend, Method, SolverOptions, ATOL_PER_RTOL,

@@ -94,8 +94,8 @@ fn crack_speeds_beyond_the_limit_are_refused() {
 
 /// A Poisson ratio of 0 is a valid elastic material (its JKR quantities exist) but no collision:
 /// the drag A = T_vis/nu^2 of Section 2.3 is infinite, so c_D is too at every T_vis. The
-/// collider names poisson, not t_vis (which it blamed before, as too large); nu = -0.2 gives
-/// the drag of nu = 0.2 (A depends on nu^2), and |nu| = 1e-3 a finite, huge c_D.
+/// collider names poisson, not t_vis (which it blamed before, as too large); nu = -0.2 and
+/// |nu| = 1e-3 (a finite, huge c_D) are collisions.
 #[test]
 fn a_poisson_ratio_of_zero_is_named_for_a_collision() {
     let with_nu = |poisson: f64| {
@@ -116,7 +116,4 @@ fn a_poisson_ratio_of_zero_is_named_for_a_collision() {
     for nu in [1e-3, -0.2] {
         assert!(Collider::new(with_nu(nu), law(), 1e-9).is_ok(), "nu = {nu}");
     }
-    // A = T_vis/nu^2: the drag of -nu is that of nu
-    let (a, b) = (with_nu(0.2), with_nu(-0.2));
-    assert_eq!(a.drag_number(1e-9), b.drag_number(1e-9));
 }

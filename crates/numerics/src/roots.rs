@@ -91,7 +91,9 @@ pub fn illinois<E>(
     let mut side = 0i8;
     for _ in 0..opts.max_iter {
         let width = hi - lo;
-        if (width <= opts.x_tol && best_f <= opts.f_tol) || width <= opts.x_floor {
+        // a NaN at an end (best_f NaN) leaves the bracket to decide, as before f_tol
+        let f_met = best_f.is_nan() || best_f <= opts.f_tol;
+        if (width <= opts.x_tol && f_met) || width <= opts.x_floor {
             break;
         }
         let secant = if f_lo.is_finite() && f_hi.is_finite() {
@@ -158,38 +160,44 @@ mod tests {
         assert!(r.lo - 1e-12 <= 2f64.ln() && 2f64.ln() <= r.hi + 1e-12);
     }
 
-    /// A steep f (e^(1000 x) - 2, root ln 2 / 1000): a bracket of 1e-5 holds values of f a
-    /// hundredth apart; with `f_tol` the search goes on until some point is within it.
+    /// A steep f (e^(1e4 x) - 2, root ln 2 / 1e4): the bracket 1e-5 wide that `x_tol` asks for
+    /// holds values of f 0.03 apart (a replay of the loop: the bracket 3.5e-6 wide, |f| = 0.035
+    /// at its best end); with `f_tol` the search goes on until a point is within it, and
+    /// `x_floor` stops it whatever |f| is.
     #[test]
     fn f_tol_goes_on_where_f_is_steep() {
-        let steep = |x: f64| Ok::<f64, ()>((1000.0 * x).exp() - 2.0);
-        let root = 2f64.ln() / 1000.0;
-        let (lo, hi) = ((0.0, -1.0), (0.001, 1f64.exp() - 2.0));
+        let steep = |x: f64| Ok::<f64, ()>((1e4 * x).exp() - 2.0);
+        let root = 2f64.ln() / 1e4;
+        let (lo, hi) = ((0.0, -1.0), (3e-4, 3f64.exp() - 2.0));
         let coarse = Illinois {
             x_tol: 1e-5,
             ..Illinois::default()
         };
-        let r = illinois(steep, lo, hi, &coarse).unwrap();
-        assert!(r.hi - r.lo <= 1e-5);
+        let c = illinois(steep, lo, hi, &coarse).unwrap();
+        assert!(c.hi - c.lo <= 1e-5);
+        assert!(
+            steep(c.best).unwrap().abs() > 1e-3,
+            "{}",
+            steep(c.best).unwrap()
+        );
         let tight = Illinois {
-            f_tol: 1e-9,
+            f_tol: 1e-12,
             x_floor: 1e-15,
             ..coarse
         };
         let t = illinois(steep, lo, hi, &tight).unwrap();
-        assert!(
-            steep(t.best).unwrap().abs() <= 1e-9,
-            "{}",
-            steep(t.best).unwrap()
-        );
-        assert!((t.best - root).abs() < 1e-12);
-        // a floor above the bracket f_tol needs stops the search there
+        let at = steep(t.best).unwrap().abs();
+        assert!(at <= 1e-12, "{at}");
+        assert!((t.best - root).abs() < 1e-15);
+        // a floor wider than the bracket f_tol needs stops the search there
         let floored = Illinois {
+            x_tol: 1e-9,
             x_floor: 1e-5,
             ..tight
         };
         let f = illinois(steep, lo, hi, &floored).unwrap();
-        assert!(f.hi - f.lo <= 1e-5);
+        assert!(f.hi - f.lo <= 1e-5 && f.hi - f.lo > 1e-9);
+        assert!(steep(f.best).unwrap().abs() > 1e-12);
     }
 
     #[test]

@@ -54,3 +54,11 @@ def test_infer_example_runs(tmp_path):
     assert out.returncode == 0, out.stderr
     assert "P(T_vis,H2O > T_vis,CO2)" in out.stdout
     assert (tmp_path / "ice.png").stat().st_size > 10_000
+
+
+def test_fit_round_trip_example_runs(tmp_path):
+    # synthetic truth: each target V_stick is given back by v_stick at its fitted T_vis, next to
+    # the no-bouncing cliff too (before 2026-11-28: 18 % of such fits off by more than 1e-5)
+    out = run_example("fit_round_trip.py", "200", tmp=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert "above 1e-5: 0.00%" in out.stdout, out.stdout

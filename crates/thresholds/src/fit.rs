@@ -18,11 +18,12 @@ use std::cell::Cell;
 /// Relative tolerance of the fitted T_vis (dimensionless): the bracket in ln T_vis at most this
 /// wide, far below the uncertainty of any measured V_stick. Alone it is not enough next to the
 /// no-bouncing cliff, where d ln V_stick / d ln T_vis grows without bound: there a bracket of
-/// 1e-5 held V_stick values up to 1.5e-3 apart (2000 fits of random materials, sizes, k and
-/// targets of the whole domain: V_stick at the fitted T_vis was off the target by more than
-/// 1e-5 at 18 %, by more than 1e-4 at 1.3 %). So the fit also asks V_stick at the T_vis it
-/// returns to lie within the searches' `rel_tol` of the target, narrowing the bracket down to
-/// [`T_VIS_FLOOR_TOL`] at most.
+/// 1e-5 held V_stick values up to 1.5e-3 apart (`examples/python/fit_round_trip.py`, 1985 fits
+/// of random materials, sizes, k and targets of the whole domain, before 2026-11-28: V_stick at
+/// the fitted T_vis off the target by more than 1e-5 at 18 %, by more than 1e-4 at 1.3 %). So
+/// the fit goes on until a T_vis tried gives V_stick within the searches' `rel_tol` of the
+/// target, or the bracket is 1e-9 (`T_VIS_FLOOR_TOL`; now 99.9 % within 1e-6, all within
+/// 7.4e-6).
 pub const T_VIS_REL_TOL: f64 = 1e-5;
 /// The narrowest bracket in ln T_vis the fit goes to for a V_stick within `rel_tol` of the
 /// target: across 1e-9 even d ln V / d ln T = 1000 moves V_stick by 1e-6; it bounds the work
@@ -282,7 +283,8 @@ fn solve(
 /// by the tables and by the search then differ by percents to tens of percent in T_vis while
 /// V_stick at either agrees with the measured one to 1e-5; an uncertainty `v_stick_err` gives
 /// the range that matters. Each T_vis returned is the one tried whose V_stick came closest to
-/// its target: within `opts.rel_tol` of it ([`T_VIS_REL_TOL`]).
+/// its target: within `opts.rel_tol` ([`SearchOptions::rel_tol`]) of it unless the bracket
+/// reached 1e-9 in ln T_vis first ([`T_VIS_REL_TOL`]).
 ///
 /// # Example
 /// ```

@@ -152,8 +152,9 @@ impl Grid {
     }
 
     /// Checks every axis before any work: each non-empty, radii and T_vis finite and > 0
-    /// (T_vis >= 0), 0 < k <= 0.9 ([`dynamics::collision_k`]), gamma_SV > 0, and every material with its
-    /// gamma_SV valid.
+    /// (T_vis >= 0), 0 < k <= 0.9 ([`dynamics::collision_k`]), gamma_SV > 0, every material
+    /// with its gamma_SV valid, and its Poisson ratio nonzero where a T_vis > 0 asks for
+    /// collisions ([`dynamics::collision_poisson`]).
     pub fn validate(&self) -> Result<(), OutOfRange> {
         if self.materials.is_empty() {
             return Err(OutOfRange::new(
@@ -207,6 +208,16 @@ impl Grid {
                     ..m.material
                 }
                 .validate()?;
+            }
+        }
+        // T_vis = 0 alone (the JKR limit) integrates no collision
+        let collisions = match &self.t_vis {
+            TVisAxis::Values(t) => t.iter().any(|&t| t > 0.0),
+            TVisAxis::Law(_) => true,
+        };
+        if collisions {
+            for m in &self.materials {
+                dynamics::collision_poisson(m.material.poisson)?;
             }
         }
         Ok(())
