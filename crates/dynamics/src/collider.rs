@@ -143,7 +143,7 @@ impl Collider {
                 "t_vis",
                 t_vis,
                 format!(
-                    ">= {} s for these grains ({}, gamma_sv = {} J/m^2; the bound grows as sqrt(R) and as gamma_sv^(-3/2)): below it the crack-speed number c_a exceeds {:e} and the collision cannot be integrated (V_stick has reached its T_vis -> 0 limit there to about 1e-6; the master table answers below it)",
+                    ">= {} s for these grains ({}, gamma_sv = {} J/m^2; the bound grows as sqrt(R) and as gamma_sv^(-3/2)): below it the crack-speed number c_a exceeds {:e} and the collision cannot be integrated (V_stick has reached its T_vis -> 0 limit there to about 1e-6; below it the tables answer, V_stick by default and a collision's e and V_out with the table method)",
                     numerics::format::number(t_min),
                     contact.geometry().as_arguments(),
                     numerics::format::number(contact.material().gamma_sv),

@@ -167,3 +167,18 @@ def test_sweep_has_a_method_column():
     df = st.sweep("co2", radius=[60e-6], t_vis=[1e-10, 1e-9], method="table", progress=False)
     assert "method" in df.columns
     assert set(df["method"]) == {"table"}
+
+
+def test_below_the_crack_speed_bound_the_tables_give_the_rebound():
+    # centimetre grains at T_vis = 1.2e-16 s: the crack-speed number c_a exceeds 3e10
+    # (dynamics::MAX_CRACK_SPEED_NUMBER) and the ODE refuses, naming the bound and the table
+    # method; the restitution tables answer with the converged T_vis -> 0 value, which the ODE
+    # at the smallest T_vis it integrates (1.8e-16 s) confirms within 1e-6 (it differs there by
+    # 1.8e-7)
+    m = st.Material(gamma_sv=0.0115, young=1.9e11, poisson=0.42, density=1225.0)
+    with pytest.raises(ValueError, match=r"^t_vis = 1\.2e-16: must be >= .*with the table method"):
+        st.collide(m, 8.1e-3, 1.2e-16, 3.5e-3, k=0.018)
+    table = st.collide(m, 8.1e-3, 1.2e-16, 3.5e-3, k=0.018, method="table")
+    ode = st.collide(m, 8.1e-3, 1.8e-16, 3.5e-3, k=0.018)
+    assert (table.method, ode.method, table.outcome) == ("table", "ode", "bouncing")
+    assert abs(table.e - ode.e) < 1e-6
