@@ -39,4 +39,5 @@ with warnings.catch_warnings():
 e = np.array(misses)
 print(f"{len(e)} fits ({by_search} by the search, {refused} refused): |V_stick(T_vis fitted) / "
       f"target - 1| median {np.median(e):.1e}, 99.9 % {np.percentile(e, 99.9):.1e}, "
-      f"max {e.max():.1e}; above 1e-6: {np.mean(e > 1e-6):.2%}, above 1e-5: {np.mean(e > 1e-5):.2%}")
+      f"max {e.max():.1e}; above 1e-6: {np.mean(e > 1e-6):.2%}, "
+      f"above 1e-5: {np.mean(e > 1e-5):.2%}")

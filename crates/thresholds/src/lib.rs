@@ -66,8 +66,8 @@ pub use contact::{
     Contact, ContactError, Dimensionless, Geometry, Material, Warning, JKR_QUANTITIES, PRESETS,
 };
 pub use dynamics::{
-    collision_k, Backend, Collider, Collision, DynamicsError, Method, Outcome, Rebound,
-    SolverOptions, StickingCriterion, TrajectoryPoint, K_MAX, K_RANGE,
+    collision_k, collision_poisson, Backend, Collider, Collision, DynamicsError, Method, Outcome,
+    Rebound, SolverOptions, StickingCriterion, TrajectoryPoint, K_MAX, K_RANGE,
 };
 pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, FitWarning, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};

@@ -57,8 +57,9 @@ def collide(
         0.0504; not within a thin band at the cliff or the onset of double collisions; at most
         1.3e4 V_stick; beyond the cliff, sticking below the search limit); the ODE elsewhere
         (with BDF where the tables cover k: e within 1.3e-6 of ``'ode'`` at a third of its
-        time), and with ``trajectory`` or ``t_end``. The result's ``method`` says which answered; a table answer has no contact time (NaN; None for a
-        sticking scalar, as from the ODE) or sticking criterion.
+        time), and with ``trajectory`` or ``t_end``. The result's ``method`` says which
+        answered; a table answer has no contact time (NaN; None for a sticking scalar, as from
+        the ODE) or sticking criterion.
 
     Returns
     -------

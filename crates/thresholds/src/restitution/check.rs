@@ -139,8 +139,8 @@ pub const QUARTERS_HEADER: &str = "quarters: every vouched cell checked again at
 
 /// Each vouched cell of `table` (of `law`'s k) checked again at its quarters ([`QUARTERS`],
 /// both speed sets; `cargo xtask restitution-table --quarters`, for tables whose cells were
-/// checked at their centres only), and [`QUARTERS_HEADER`] in its header; how many flags were dropped (each
-/// side of each cell counts).
+/// checked at their centres only), and [`QUARTERS_HEADER`] in its header; how many flags were
+/// dropped (each side of each cell counts).
 pub fn check_quarters(
     (cfg, law): (&BuildConfig, &CrackLaw),
     table: &mut TableData,
