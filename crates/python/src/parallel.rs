@@ -36,7 +36,11 @@ const CLOCK_EVERY: usize = 4;
 
 /// After the start, a chunk holds about this much work on every core (from the rate measured
 /// so far), so that Ctrl-C is checked every few tens of milliseconds whatever an element costs.
-const CHUNK_TIME: Duration = Duration::from_millis(20);
+/// Each chunk ends when its slowest thread does, the others waiting: a million CO2 points
+/// (`examples/python/table_speed.py`, 18 of them searches of about 13 ms) kept two cores busy
+/// 1.77-1.90 of the wall time with 20 ms chunks, 1.89-1.96 with 60 ms (2026-11-28, release
+/// wheels alternating).
+const CHUNK_TIME: Duration = Duration::from_millis(60);
 
 /// The most elements in one chunk.
 const MAX_CHUNK: usize = 1 << 20;
@@ -152,7 +156,7 @@ pub struct Columns {
 
 /// The most elements a thread computes in one piece in [`map_rows`], writing their rows into
 /// every column; a chunk is cut into at least four blocks a thread, so that a chunk of slow
-/// elements (searches: a chunk is 20 ms of work) is still shared among the threads.
+/// elements (searches: a chunk is 60 ms of work) is still shared among the threads.
 const BLOCK: usize = 4096;
 
 /// Blocks a thread at least, of a chunk (for rayon to balance).
