@@ -49,10 +49,12 @@
 //! - [`restitution`]: the restitution tables ([`RestitutionTables`]) and
 //!   [`restitution::collision`], one collision's outcome, e and V_out from the tables or else
 //!   the ODE.
+//! - [`k_axis`]: the k axis both kinds of table share (a k's own table, the k between tables).
 
 pub mod bytes;
 pub mod error;
 pub mod fit;
+pub mod k_axis;
 pub mod laws;
 pub mod master;
 pub mod paper;

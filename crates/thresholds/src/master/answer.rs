@@ -29,10 +29,7 @@ use super::interp::lagrange_weight;
 use super::table::{Curve, Levels, RowsAt};
 use super::verdict::{both, side, Eval, Side, BOUND_MARGIN, V_MAX_MARGIN};
 use super::MasterTables;
-
-/// Two k closer than this (relative) are the same k: a query at a table's own k uses that table
-/// alone.
-pub(super) const SAME_K: f64 = 1e-12;
+use crate::k_axis;
 
 /// How many tables of neighbouring k answer a k between tables: six, the quintic in ln k
 /// through them. Measured at the middle of the k intervals (tables 2^(1/3) apart in k): the cubic
@@ -124,8 +121,7 @@ impl MasterTables {
     /// around y (nothing is vouched for there).
     fn k_stencil(&self, k: f64, y: f64) -> Option<KStencil<'_>> {
         let ks = self.table_k();
-        // |k/t - 1| < SAME_K without a division a table
-        if let Some(i) = ks.iter().position(|&t| (k - t).abs() < SAME_K * t) {
+        if let Some(i) = k_axis::own_table(ks, k) {
             let t = self.table(i)?;
             let at = t.rows_at(y)?;
             let mut weights = [0.0; K_STENCIL_EDGE];
@@ -141,7 +137,7 @@ impl MasterTables {
             });
         }
         let n = ks.len();
-        if n < 4 || !(k > ks[0] && k < ks[n - 1]) {
+        if !k_axis::between_tables(ks, k) {
             return None;
         }
         let i = (1..n).find(|&i| ks[i] > k).map_or(n - 2, |i| i - 1);

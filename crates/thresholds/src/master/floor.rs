@@ -30,12 +30,12 @@
 //! whole domain it answers and at 590 points of the band at the cliff (`tests/master_floor.rs`,
 //! `tests/master_bounds.rs`).
 
-use super::answer::SAME_K;
 use super::binary::{Piece, Row, Table};
 use super::format::F_TOP;
 use super::interp::interval;
 use super::verdict::{side, Eval, Side, BOUND_MARGIN};
 use super::MasterTables;
+use crate::k_axis::same_k;
 
 /// The floor answers for search limits up to this ratio (f_max = v_max / V_stick,JKR): the
 /// range over which its verdicts were checked against the default search (100-3000,
@@ -127,10 +127,9 @@ impl MasterTables {
     pub fn node_floor(&self, x: f64, y: f64, k: f64) -> [Option<f64>; 2] {
         let ks = self.table_k();
         // the last table at or below k and the first at or above (one table at its own k, to
-        // within rounding, SAME_K)
-        let same = |t: f64| (k - t).abs() < SAME_K * t;
-        let below = ks.iter().rposition(|&t| t <= k || same(t));
-        let above = ks.iter().position(|&t| t >= k || same(t));
+        // within rounding, `k_axis::SAME_K`)
+        let below = ks.iter().rposition(|&t| t <= k || same_k(k, t));
+        let above = ks.iter().position(|&t| t >= k || same_k(k, t));
         let floor = |i: Option<usize>| match i.and_then(|i| self.table(i)) {
             Some(t) => t.node_floor(x, y),
             None => [None, None],
@@ -242,7 +241,7 @@ mod tests {
         assert_eq!(t.node_floor(f64::NAN, 0.25), [None, None]);
     }
 
-    /// The tables around k: at a table's own k (to within [`SAME_K`]) that table's floor alone;
+    /// The tables around k: at a table's own k (to within [`crate::k_axis::SAME_K`]) that table's floor alone;
     /// between two tables the smaller of theirs; nothing outside the tables' k.
     #[test]
     fn the_tables_around_k() {

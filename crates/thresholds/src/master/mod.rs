@@ -186,7 +186,9 @@ impl MasterTables {
     pub fn k_checked(&self) -> bool {
         let Some(e) = self.ends() else { return false };
         let e: &EndsData = e.data();
-        self.k.len() >= 4 && e.kcheck_y.2 > 0 && e.kcheck.len() == (self.k.len() - 1) * e.kcheck_y.2
+        self.k.len() >= crate::k_axis::MIN_TABLES_BETWEEN
+            && e.kcheck_y.2 > 0
+            && e.kcheck.len() == (self.k.len() - 1) * e.kcheck_y.2
     }
 
     /// The limits of the polynomial in ln k between tables `i` and `i + 1` at `y`, as a table's

@@ -46,6 +46,7 @@ pub mod format;
 pub mod refine;
 mod stencil;
 
+use crate::k_axis;
 use crate::master::interp::{interval, lagrange, stencil_start};
 use crate::master::{MasterTables, F_TOP};
 use contact::Contact;
@@ -109,9 +110,6 @@ pub fn channel_of(s: f64, f: f64, f_on: f64) -> Option<(bool, f64)> {
 /// while the cells were checked at their centres alone (misses up to 1.3e-3, 1.9e-3 to 3.9e-2
 /// from the end then).
 pub const CLIFF_MARGIN: f64 = 0.03;
-
-/// Two k closer than this (relative) are the same k.
-const SAME_K: f64 = 1e-12;
 
 /// The rebound of one collision from the tables (SI).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -177,9 +175,7 @@ impl RestitutionTables {
     /// Whether the tables answer at `k` anywhere: one of their own k, or (with four tables or
     /// more) a k between the first and the last, as [`RestitutionTables::rebound`] takes it.
     pub fn covers(&self, k: f64) -> bool {
-        let ks = &self.k;
-        ks.iter().any(|&t| (k / t - 1.0).abs() < SAME_K)
-            || (ks.len() >= 4 && k > ks[0] && k < ks[ks.len() - 1])
+        k_axis::covered(&self.k, k)
     }
 
     /// The k of the tables.
@@ -191,7 +187,7 @@ impl RestitutionTables {
     /// interval, so that every k between the first and the last table is answered (else only
     /// the tables' own k).
     pub fn k_checked(&self) -> bool {
-        self.k.len() >= 4
+        self.k.len() >= k_axis::MIN_TABLES_BETWEEN
             && (0..self.k.len() - 1).all(|i| {
                 self.table(i)
                     .is_some_and(|t| t.rows.iter().any(|r| !r.cells.k_all.is_empty()))
@@ -283,13 +279,13 @@ impl RestitutionTables {
     /// `checked`: only where the cells (and the k cells) were vouched for.
     fn h(&self, x: f64, y: f64, k: f64, side: Side, coord: f64, checked: bool) -> Option<f64> {
         let ks = &self.k;
-        if let Some(i) = ks.iter().position(|&t| (k / t - 1.0).abs() < SAME_K) {
+        if let Some(i) = k_axis::own_table(ks, k) {
             return Stencil::new(self.table(i)?, x, y, side, coord, checked, false)?.h(y);
         }
-        let n = ks.len();
-        if n < 4 || !(k > ks[0] && k < ks[n - 1]) {
+        if !k_axis::between_tables(ks, k) {
             return None;
         }
+        let n = ks.len();
         let ln = &self.ln_k;
         let i = interval(ln, k.ln());
         let s = stencil_start(i, n);
