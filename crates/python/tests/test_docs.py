@@ -1,5 +1,6 @@
 """The Python blocks of README.md and of the documentation site run as a reader would run them,
-and the numbers their comments give hold.
+and the numbers their comments give hold; the "this code" column of the paper-vs-ours tables
+(README.md, "Validation") is what the package gives, at the digits written.
 
 Each page's blocks run in order in one namespace that starts with ``np``, ``st`` and ``co2``
 (the names the pages take as known), in a scratch directory that sees the repository's
@@ -22,6 +23,8 @@ import re
 import warnings
 
 import pytest
+
+import stickiness as st
 
 ROOT = pathlib.Path(__file__).resolve().parents[3]
 
@@ -106,3 +109,63 @@ def test_the_python_blocks_run_and_their_numbers_hold(page, tmp_path, monkeypatc
 )
 def test_agrees_reads_the_digits_written(value, stated, ok):
     assert agrees(value, stated) is ok
+
+
+def _results():
+    """What the package gives for each row of the paper-vs-ours tables (README.md, "Validation"),
+    by the start of the row's quantity: the values of the "this code" column, in its units."""
+    co2 = st.Material.co2()
+
+    def h2o(gamma_sv):
+        return st.Material.h2o().replace(gamma_sv=gamma_sv)
+
+    def search(m, r, t):
+        return st.v_stick(m, r, t, method="search")
+
+    fit = st.fit_t_vis(co2, 60e-6, 0.04, v_stick_err=0.02, method="search")
+    at_1e9 = search(co2, 60e-6, 1e-9)
+    return {
+        "CO2 E, nu from sound speeds": lambda: [co2.young / 1e9, co2.poisson],
+        "CO2 Tabor parameter": lambda: [st.jkr(co2, 60e-6).tabor],
+        "CO2 V_stick,JKR, R1 = 60 um": lambda: [st.jkr(co2, 60e-6).v_stick_jkr],
+        "CO2 V_frag,JKR": lambda: [st.v_frag(co2, 30e-6, 0.0).v_frag_jkr],
+        "same: sticking -> double": lambda: [100 * at_1e9.v_double_onset],
+        "same: V_stick, double -> bouncing": lambda: [100 * at_1e9.v_stick],
+        "CO2 60 um, T_vis = 1e-9 s: V_stick, double -> bouncing": lambda: [100 * at_1e9.v_stick],
+        "CO2 60 um: V_stick at T_vis = 8.5e-11 s": lambda: [search(co2, 60e-6, 8.5e-11).v_stick],
+        "CO2 60 um: V_stick at T_vis = 1.97e-9 s": lambda: [search(co2, 60e-6, 1.97e-9).v_stick],
+        "CO2 60 um: T_vis for 0.04": lambda: [fit.t_vis_min, fit.t_vis_max],
+        "CO2 60 um: V_stick at T_vis = 1e-14 s": lambda: [search(co2, 60e-6, 1e-14).v_stick],
+        "H2O 90 um, gamma_SV = 0.19: T_vis for 0.73": lambda: [
+            st.fit_t_vis(h2o(0.19), 90e-6, 0.73, method="search").t_vis],
+        "H2O 90 um, gamma_SV = 0.02: T_vis for 0.73": lambda: [
+            st.fit_t_vis(h2o(0.02), 90e-6, 0.73, method="search").t_vis],
+        "H2O 90 um: V_stick at 5.3e-9 s / 2.37e-8 s": lambda: [
+            search(h2o(0.19), 90e-6, 5.3e-9).v_stick, search(h2o(0.02), 90e-6, 2.37e-8).v_stick],
+        "T_vis,H2O(90 um)": lambda: [st.t_vis_law("h2o", 90e-6)],
+    }
+
+
+NUMBER = re.compile(r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+@pytest.mark.parametrize("page", ["README.md", "docs/site/validation.md"])
+def test_the_results_tables_say_what_the_package_gives(page):
+    results = _results()
+    rows = [r for r in (ROOT / page).read_text().splitlines() if r.startswith("| ")]
+    checked = 0
+    for row in rows:
+        cells = [c.strip() for c in row.strip("|").split("|")]
+        if len(cells) < 3:
+            continue
+        key = next((k for k in results if cells[0].startswith(k)), None)
+        if key is None:
+            continue
+        ours = cells[2].split("(")[0]  # "(*)", "(2e-4 above)": notes, not values
+        values = results[key]()
+        written = NUMBER.findall(ours)[: len(values)]
+        assert len(written) == len(values), f"{page}: {row}"
+        for value, w in zip(values, written):
+            assert agrees(value, w), f"{page}: {cells[0]}: the package gives {value!r}, the table {w}"
+        checked += 1
+    assert checked >= (4 if page == "README.md" else 14), f"{page}: {checked} rows checked"
