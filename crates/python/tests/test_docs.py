@@ -166,6 +166,6 @@ def test_the_results_tables_say_what_the_package_gives(page):
         written = NUMBER.findall(ours)[: len(values)]
         assert len(written) == len(values), f"{page}: {row}"
         for value, w in zip(values, written):
-            assert agrees(value, w), f"{page}: {cells[0]}: the package gives {value!r}, the table {w}"
+            assert agrees(value, w), f"{page}: {cells[0]}: the package gives {value!r}, not {w}"
         checked += 1
     assert checked >= (4 if page == "README.md" else 14), f"{page}: {checked} rows checked"

@@ -241,8 +241,9 @@ mod tests {
         assert_eq!(t.node_floor(f64::NAN, 0.25), [None, None]);
     }
 
-    /// The tables around k: at a table's own k (to within [`crate::k_axis::SAME_K`]) that table's floor alone;
-    /// between two tables the smaller of theirs; nothing outside the tables' k.
+    /// The tables around k: at a table's own k (to within [`crate::k_axis::SAME_K`]) that
+    /// table's floor alone; between two tables the smaller of theirs; nothing outside the
+    /// tables' k.
     #[test]
     fn the_tables_around_k() {
         let t = MasterTables::standard();
