@@ -56,7 +56,7 @@ def agrees(value, stated):
     want = float(stated)
     if want == 0:
         return value == 0
-    # half a unit of the last digit written, relative
+    # within half a unit of the last digit written
     return abs(value - want) <= 0.5 * 10 ** (math.floor(math.log10(abs(want))) - digits + 1)
 
 
