@@ -10,7 +10,7 @@ use clap::Command;
 use std::ffi::OsString;
 use std::num::IntErrorKind;
 
-/// One line for a value that does not parse (`--radius = abc: not a number; Radius R1 of the
+/// One line for a value that does not parse (`--radius = abc: not a number; radius R1 of the
 /// (first) sphere (m, > 0)`; `--jobs = 1.5: not a whole number; ...`), or `None` for any other
 /// error. `argv` names the subcommand whose flag it is.
 pub fn message(cmd: &Command, argv: &[OsString], e: &clap::Error) -> Option<String> {
@@ -39,6 +39,17 @@ pub fn message(cmd: &Command, argv: &[OsString], e: &clap::Error) -> Option<Stri
         .find(|a| a.get_long() == Some(long.as_str()))
         .and_then(|a| a.get_help().map(|h| h.to_string()))?;
     let help = help.lines().next()?.trim_end_matches('.');
+    // the help line continues the sentence: its first word in lower case, unless it is an
+    // acronym or a symbol (`JKR`, `T_vis`), whose second letter is not a lower-case one
+    let mut chars = help.chars();
+    let help = match (chars.next(), chars.next()) {
+        (Some(first), Some(second))
+            if first.is_ascii_uppercase() && second.is_ascii_lowercase() =>
+        {
+            format!("{}{}", first.to_ascii_lowercase(), &help[1..])
+        }
+        _ => help.to_string(),
+    };
     // a count (`--jobs`) takes a whole number, and one that fits
     let int =
         std::error::Error::source(e).and_then(|s| s.downcast_ref::<std::num::ParseIntError>());

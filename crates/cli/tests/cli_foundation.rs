@@ -86,9 +86,9 @@ fn a_value_that_is_not_a_number_is_named_in_one_line() {
             .collect::<Vec<_>>()
     };
     for (args, expected) in [
-        (words("v-stick --radius abc --t-vis 1e-9"), "--radius = abc: not a number; Radius R1"),
-        (words("collide --t-vis x --v-in 0.01"), "--t-vis = x: not a number; Viscoelastic"),
-        (words("v-stick --k 0.0x --t-vis 1e-9"), "--k = 0.0x: not a number; Ratio of relaxed"),
+        (words("v-stick --radius abc --t-vis 1e-9"), "--radius = abc: not a number; radius R1"),
+        (words("collide --t-vis x --v-in 0.01"), "--t-vis = x: not a number; viscoelastic"),
+        (words("v-stick --k 0.0x --t-vis 1e-9"), "--k = 0.0x: not a number; ratio of relaxed"),
         (sweep("1.5"), "--jobs = 1.5: not a whole number"),
         (sweep("99999999999999999999999"), "too large"),
         (
