@@ -284,7 +284,8 @@ fn solve(
 /// V_stick at either agrees with the measured one to 1e-5; an uncertainty `v_stick_err` gives
 /// the range that matters. Each T_vis returned is the one tried whose V_stick came closest to
 /// its target: within `opts.rel_tol` ([`SearchOptions::rel_tol`]) of it unless the bracket
-/// reached 1e-9 in ln T_vis first ([`T_VIS_REL_TOL`]).
+/// reached 1e-9 in ln T_vis first (the usual bracket is [`T_VIS_REL_TOL`]; 1e-9 bounds the
+/// work where the searched V_stick scatters by its own tolerance).
 ///
 /// # Example
 /// ```
