@@ -19,7 +19,7 @@ sys.path.insert(0, str(HERE / "_ext"))
 
 project = "stickiness"
 author = "The stickiness developers"
-copyright = "2021-2025, The stickiness developers"
+copyright = "2026, The stickiness developers"
 release = version = stickiness.__version__
 
 extensions = [
