@@ -80,7 +80,7 @@ def posteriors(steps: int, seed: int) -> dict:
         co2 = st.infer("co2", sizes, wall=True, v_stick=(0.04, 0.02), steps=steps, seed=seed)
         # H2O: Gundlach & Blum (2015), 1.5 um, gamma_SV free over the literature's spread
         h2o = st.infer("h2o", 1.5e-6, v_stick=(9.6, 0.3), free=("t_vis", "gamma_sv"),
-                       priors={"gamma_sv": (0.02, 0.19)}, steps=3 * steps, seed=seed)
+                       priors={"gamma_sv": (0.02, 0.19)}, steps=4 * steps, seed=seed)
     return {"co2": co2, "h2o": h2o}
 
 

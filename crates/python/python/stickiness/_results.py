@@ -129,7 +129,8 @@ class Collision(_Columns):
         Approach speed when the contact ends (m/s): < 0 the grains separate, > 0 a second
         contact follows.
     contact_time : float, ndarray or None
-        Duration of the contact (s); None for a sticking collision (NaN in arrays).
+        Duration of the contact (s); None for a sticking collision (NaN in arrays), and NaN
+        where the restitution tables answered (``method='table'``: they hold e and V_out only).
     v_stick_jkr : float or ndarray
         V_stick,JKR of the contact (m/s).
     sticking_criterion : str, list or None
