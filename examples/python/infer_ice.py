@@ -39,8 +39,9 @@ co2_sizes = st.SizeDistribution.lognormal(median=math.sqrt(40e-6 * 120e-6), widt
 co2 = st.infer("co2", co2_sizes, wall=True, v_stick=(0.04, 0.02), steps=args.steps,
                seed=args.seed)
 # T_vis and gamma_SV trade off along a curved ridge (V_stick = 9.6 m/s): autocorrelation times
-# of 70-95 steps (with the differential-evolution moves), so four times the chain: 6000 steps
-# after the burn-in, more than the 50 autocorrelation times below which `infer` warns
+# of 70-95 steps (with the differential-evolution moves), so four times the chain (at the
+# default 2000: 6000 steps after the burn-in, more than the 50 autocorrelation times below
+# which `infer` warns)
 h2o = st.infer("h2o", 1.5e-6, v_stick=(9.6, 0.3), free=("t_vis", "gamma_sv"),
                priors={"gamma_sv": (0.02, 0.19)}, steps=4 * args.steps, seed=args.seed)
 posteriors = {"CO2": co2, "H2O": h2o}
