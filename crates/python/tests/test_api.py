@@ -238,6 +238,13 @@ def test_version():
     assert isinstance(st.__version__, str) and st.__version__.count(".") == 2
 
 
+def test_the_public_names_are_those_of_all():
+    # what tab completion shows a user: the documented API (`__all__`) and the `sweeps` module
+    # (`stickiness.sweeps`, imported by `sweep`), nothing imported along the way
+    public = {n for n in dir(st) if not n.startswith("_")}
+    assert public == set(st.__all__) - {"__version__"} | {"sweeps"}
+
+
 def test_warnings_point_at_the_callers_line():
     # Python's convention for library warnings: the location is the user's call, so that the
     # default filter shows each one once per calling line

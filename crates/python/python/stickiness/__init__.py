@@ -40,8 +40,6 @@ parameters. A Tabor parameter below 1 (JKR theory outside its validity), a radiu
 :class:`StickinessWarning`.
 """
 
-from __future__ import annotations
-
 from . import _core
 from ._args import StickinessWarning
 from ._core import Material, SolverError, __version__
