@@ -4,6 +4,7 @@ import dataclasses
 import math
 import pathlib
 import pickle
+import re
 import subprocess
 import sys
 import warnings
@@ -116,9 +117,12 @@ def test_bad_values_name_the_argument_and_element():
 
 
 def test_fit_below_jkr_gives_v_stick_jkr():
-    # Section 5.1: V_stick > V_stick,JKR = 0.0166 m/s for every T_vis > 0
-    # V_stick,JKR = 1.659e-2 m/s for CO2, R1 = 60 um (Arakawa & Krijt 2021, Section 5.1)
-    with pytest.raises(ValueError, match=r"^v_stick = 0\.016: must be > V_stick,JKR = 0\.01659"):
+    # Section 5.1: V_stick > V_stick,JKR (1.66e-2 m/s for CO2, R1 = 60 um) for every T_vis > 0,
+    # so a value below it is refused with V_stick,JKR as `jkr` gives it
+    jkr = st.jkr(CO2, 60e-6).v_stick_jkr
+    assert jkr == pytest.approx(1.66e-2, abs=5e-5)
+    message = rf"^v_stick = 0\.016: must be > V_stick,JKR = {re.escape(repr(jkr))} "
+    with pytest.raises(ValueError, match=message):
         st.fit_t_vis(CO2, v_stick=0.016)
 
 
