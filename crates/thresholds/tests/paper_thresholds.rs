@@ -48,9 +48,11 @@ fn section_4_4_transitions_co2_60um() {
     );
     assert!(vd > 4.03 && vd <= 4.04, "V_double_onset = {vd} cm/s");
     assert!(vs > 4.13 && vs <= 4.14, "V_stick = {vs} cm/s");
-    // Section 4: the double-collision window is narrow (about 2.6 % of V_stick).
+    // the double-collision window (V_stick - V_double_onset) / V_stick as the same grid bounds
+    // it: from (4.13 - 4.04) / 4.13 to (4.14 - 4.03) / 4.14
     let window = (vs - vd) / vs;
-    assert!(window > 0.02 && window < 0.035, "window {window}");
+    let (lo, hi) = ((4.13 - 4.04) / 4.13, (4.14 - 4.03) / 4.14);
+    assert!(window > lo && window < hi, "window {window}");
 }
 
 /// Section 5.1 (Eq. T_vis_CO2): V_stick = 0.02 and 0.06 m/s at T_vis = 8.5e-11 and 1.97e-9 s
@@ -144,11 +146,13 @@ fn section_5_3_size_law() {
 #[test]
 fn section_7_1_v_frag_jkr() {
     let v = v_frag(co2(30e-6).v_stick_jkr());
-    assert!((v / 0.296 - 1.0).abs() < 0.002, "{v}");
+    assert!((v / 0.296 - 1.0).abs() < 0.0005 / 0.296, "{v}");
 }
 
 /// Section 5.1: V_stick -> V_stick,JKR as T_vis -> 0 (within 0.1 % at T_vis = 1e-14 s), and the
-/// double-collision window closes (about 4e-6 of V_stick at 1e-14 s).
+/// double-collision window closes (below 1e-4 of V_stick at 1e-14 s, against 2 % at 1e-9 s).
+/// At T_vis = 0 the search answers V_stick,JKR by definition (no dissipation, no search): that
+/// line checks the plumbing of the limit, not the physics.
 #[test]
 fn jkr_limit() {
     let c = co2(60e-6);
@@ -161,7 +165,7 @@ fn jkr_limit() {
     );
     let window = (vs - th.v_double_onset.unwrap()) / vs;
     assert!(window > 0.0 && window < 1e-4, "{window}");
-    // T_vis = 0 is the JKR limit itself
+    // T_vis = 0 is the JKR limit itself (answered so, not searched)
     let jkr = sticking_thresholds(&c, &law(), 0.0, &SearchOptions::exact()).unwrap();
     assert_eq!(jkr.v_stick, Some(c.v_stick_jkr()));
 }
