@@ -335,7 +335,10 @@ fn early_oscillation_decision_is_the_outcome() {
         let sticks = |v: f64| col.collide(v).unwrap().outcome == Outcome::Sticking;
         let jkr = co2_60um().v_stick_jkr();
         let (mut lo, mut hi) = (0.5 * jkr, 10.0 * jkr);
-        assert!(sticks(lo) && !sticks(hi), "T_vis {t_vis}: no onset in the bracket");
+        assert!(
+            sticks(lo) && !sticks(hi),
+            "T_vis {t_vis}: no onset in the bracket"
+        );
         while hi / lo - 1.0 > 1e-7 {
             let mid = 0.5 * (lo + hi);
             if sticks(mid) {
@@ -356,7 +359,12 @@ fn early_oscillation_decision_is_the_outcome() {
                 decide_after: 3.0 * early.decided_at,
                 ..Default::default()
             };
-            let late = col.clone().with_options(opts).unwrap().collide(v_in).unwrap();
+            let late = col
+                .clone()
+                .with_options(opts)
+                .unwrap()
+                .collide(v_in)
+                .unwrap();
             assert_eq!(late.outcome, Outcome::Sticking, "T_vis {t_vis} V {v_in}");
             assert!(late.decided_at >= opts.decide_after);
         }

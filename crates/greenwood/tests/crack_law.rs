@@ -145,3 +145,74 @@ fn unchecked_speed_saturates_beyond_bounds() {
     assert_eq!(law.speed_unchecked(2.0 / K).v, f64::NEG_INFINITY);
     assert!(law.speed_unchecked(f64::NAN).v.is_nan());
 }
+
+/// `∫_0^1 f(s) ds` by tanh-sinh quadrature (written here, independent of the crate's
+/// quadrature): s = 1 / (1 + e^(-2u)), u = (pi/2) sinh t, step 1/64 in t out to |t| = 4;
+/// `f` gets s and 1 - s (computed without cancellation next to s = 1).
+fn tanh_sinh(f: impl Fn(f64, f64) -> f64) -> f64 {
+    let h = 1.0 / 64.0;
+    let mut sum = 0.0;
+    for i in -256..=256 {
+        let t = f64::from(i) * h;
+        let u = std::f64::consts::FRAC_PI_2 * t.sinh();
+        let (s, c) = (
+            1.0 / (1.0 + (-2.0 * u).exp()),
+            1.0 / (1.0 + (2.0 * u).exp()),
+        );
+        // ds/dt = (pi/2) cosh t * 2 s (1 - s)
+        let w = std::f64::consts::PI * t.cosh() * s * c;
+        if s > 0.0 && c > 0.0 {
+            sum += w * f(s, c);
+        }
+    }
+    sum * h
+}
+
+/// Appendix A as printed, from its integrals: J1, J2, J3 by [`tanh_sinh`] (with xi = s^2, so
+/// that J3's xi^(-1/2) goes), then I1 = k + (1 - k) J1, I2 = k + (1 - k) J2,
+/// I3 = 1 - (1 - k) J3, and beta = 1/I1, v = -(pi/4)/(alpha I1) (opening), beta = I3^2/I2,
+/// v = (pi/4)/(alpha I2) (closing), against the crate's crack-law points and the table's v(beta)
+/// at several k and alpha: the formulas' factors and which integral goes where, checked
+/// against the paper's equations rather than the crate's own code.
+#[test]
+fn appendix_a_from_its_integrals() {
+    let j = |alpha: f64| {
+        // e^(-alpha (1 - xi)) with xi = s^2 and 1 - xi = c (1 + s)
+        let damp = |s: f64, c: f64| (-alpha * c * (1.0 + s)).exp();
+        // ln((1 + sqrt xi)/(1 - sqrt xi)) = ln((1 + s)/c); dxi = 2 s ds
+        let log = |s: f64, c: f64| ((1.0 + s) / c).ln();
+        let f = |s: f64, c: f64| 2.0 * s - c * (1.0 + s) * log(s, c);
+        let a = |s: f64, c: f64| 2.0 * s + c * (1.0 + s) * log(s, c);
+        let j1 = 0.5 * alpha * tanh_sinh(|s, c| damp(s, c) * f(s, c) * 2.0 * s);
+        let j2 = 0.5 * alpha * tanh_sinh(|s, c| damp(s, c) * a(s, c) * 2.0 * s);
+        // (1/2) xi^(-1/2) dxi = ds
+        let j3 = tanh_sinh(damp);
+        (j1, j2, j3)
+    };
+    let pi4 = std::f64::consts::FRAC_PI_4;
+    for k in [0.01, 0.05, 0.3] {
+        let law = CrackLaw::new(k).unwrap();
+        for alpha in [0.03, 0.5, 4.0, 40.0] {
+            let (j1, j2, j3) = j(alpha);
+            let (i1, i2, i3) = (k + (1.0 - k) * j1, k + (1.0 - k) * j2, 1.0 - (1.0 - k) * j3);
+            for (branch, beta, v) in [
+                (Branch::Opening, 1.0 / i1, -pi4 / (alpha * i1)),
+                (Branch::Closing, i3 * i3 / i2, pi4 / (alpha * i2)),
+            ] {
+                let p = CrackPoint::new(k, alpha, branch).unwrap();
+                let at = format!("k = {k}, alpha = {alpha}, {branch:?}");
+                assert!(
+                    (p.beta / beta - 1.0).abs() < 1e-10,
+                    "{at}: beta {} vs {beta}",
+                    p.beta
+                );
+                assert!((p.v / v - 1.0).abs() < 1e-10, "{at}: v {} vs {v}", p.v);
+                let table = law.v(beta).unwrap();
+                assert!(
+                    (table / v - 1.0).abs() < 1e-7,
+                    "{at}: table v {table} vs {v}"
+                );
+            }
+        }
+    }
+}

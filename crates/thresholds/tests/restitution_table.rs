@@ -200,7 +200,10 @@ fn the_double_collisions_that_set_the_onset_margin() {
         let law = CrackLaw::new(k).unwrap();
         let what = format!("{material:?} on a wall, R1 = {r1} m, T_vis = {t_vis} s, k = {k}");
         let answered = table_agrees_with_the_ode(&contact, &law, t_vis, v_in, &what);
-        assert!(!answered, "{what}: inside ONSET_MARGIN, answered by the tables");
+        assert!(
+            !answered,
+            "{what}: inside ONSET_MARGIN, answered by the tables"
+        );
     }
 }
 
