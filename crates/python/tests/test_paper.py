@@ -61,14 +61,14 @@ def test_section_5_3_size_law_and_7_1_v_frag_jkr():
     assert abs(st.t_vis_law("CO2", 1e-6) - 1e-11) < 1e-25
     v = st.v_frag(CO2, radius=30e-6)
     assert v.t_vis == 0.0
-    assert abs(v.v_frag / 0.296 - 1) < 0.002
-    assert v.v_frag == 10 * v.v_stick
+    assert abs(v.v_frag / 0.296 - 1) < 0.0005 / 0.296  # the paper's rounding
+    assert v.v_frag == 10 * v.v_stick  # the definition (Section 7.1), as the result reports it
 
 
 def test_jkr_limit_and_growth_with_t_vis():
     # Section 5.1 / Figure 4: V_stick -> V_stick,JKR as T_vis -> 0 and grows with T_vis
     r = st.v_stick(CO2, radius=60e-6, t_vis=np.array([0.0, 1e-14, 1e-11, 1e-9, 1e-8]))
-    assert r.v_stick[0] == r.v_stick_jkr[0]
+    assert r.v_stick[0] == r.v_stick_jkr[0]  # T_vis = 0: answered so by definition (plumbing)
     assert abs(r.v_stick[1] / r.v_stick_jkr[1] - 1) < 1e-3
     assert np.all(np.diff(r.v_stick) > 0)
 
