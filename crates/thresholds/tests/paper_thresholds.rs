@@ -48,11 +48,8 @@ fn section_4_4_transitions_co2_60um() {
     );
     assert!(vd > 4.03 && vd <= 4.04, "V_double_onset = {vd} cm/s");
     assert!(vs > 4.13 && vs <= 4.14, "V_stick = {vs} cm/s");
-    // the double-collision window (V_stick - V_double_onset) / V_stick as the same grid bounds
-    // it: from (4.13 - 4.04) / 4.13 to (4.14 - 4.03) / 4.14
-    let window = (vs - vd) / vs;
-    let (lo, hi) = ((4.13 - 4.04) / 4.13, (4.14 - 4.03) / 4.14);
-    assert!(window > lo && window < hi, "window {window}");
+    // (so the double-collision window, 1 - V_double_onset / V_stick, is 2.2-2.7 % as the grid
+    // bounds it; the paper states no other number for it)
 }
 
 /// Section 5.1 (Eq. T_vis_CO2): V_stick = 0.02 and 0.06 m/s at T_vis = 8.5e-11 and 1.97e-9 s
