@@ -42,7 +42,7 @@ enum Command {
     /// The sign of v_out, the approach speed d(delta)/dt when the contact ends, tells the two
     /// others apart: v_out < 0, the grains separate (bouncing, e = -v_out/v_in > 0); v_out > 0,
     /// the contact ended while the grains approach again, so a second contact follows (double
-    /// collision, e < 0). Sections 2.6 and 4 of Arakawa & Krijt (2021).
+    /// collision, e < 0). Sections 2.5 and 4 of Arakawa & Krijt (2021).
     Collide(commands::collide::CollideArgs),
     /// Threshold velocity for sticking V_stick and the onset of double collisions.
     VStick(commands::v_stick::VStickArgs),

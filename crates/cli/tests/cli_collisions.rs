@@ -56,7 +56,7 @@ fn collide_writes_a_trajectory_csv() {
         .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
         .collect();
     assert!(rows.len() > 10);
-    assert_eq!(rows[0][2], 0.0); // delta = 0 at first contact (Section 2.6)
+    assert_eq!(rows[0][2], 0.0); // delta = 0 at first contact (Section 2.5)
     assert_eq!(rows[0][3], 0.045); // delta_dot = V_in
     assert!((rows[0][5] / 0.0101 - 1.0).abs() < 1e-9); // beta = (1 + eps) k
 }

@@ -28,7 +28,7 @@ fn jkr_defaults_and_keys() {
     assert!(text.contains("v_stick_jkr") && text.contains("m/s"));
 }
 
-/// Sections 2.6 and 5.4 give two CO2 densities: --density 1650 scales V_stick,JKR by sqrt(1560/1650).
+/// Sections 2.5 and 5.4 give two CO2 densities: --density 1650 scales V_stick,JKR by sqrt(1560/1650).
 #[test]
 fn density_override_scales_v_stick_jkr() {
     let a = json_of("jkr --json")["v_stick_jkr"].as_f64().unwrap();

@@ -1,4 +1,4 @@
-//! The two dimensionless numbers a collision depends on (Sections 2.3-2.6 in the JKR units of
+//! The two dimensionless numbers a collision depends on (Sections 2.3-2.5 in the JKR units of
 //! `docs/model.md`), and the drag and crack-speed units they are made of:
 //! ```text
 //! A   = T_vis / nu^2                                   (drag coefficient, Sec. 2.5)
@@ -29,7 +29,7 @@ impl Contact {
 
     /// The two dimensionless numbers of a collision at relaxation time `t_vis` (s, > 0): in JKR
     /// units the collision depends only on them, on k and on eps, so V_stick / V_stick,JKR is a
-    /// function of `(c_D, c_a)` for every material, size and geometry (Sections 2.3-2.6):
+    /// function of `(c_D, c_a)` for every material, size and geometry (Sections 2.3-2.5):
     /// ```text
     /// c_D = 2 (T_vis/nu^2) E* a_eq t0 / m*          (drag)
     /// c_a = E* gamma t0 / (sigma0^2 T_vis a_eq)       (crack speed)

@@ -44,7 +44,7 @@ pub fn elastic_from_sound_speeds(v_lg: f64, v_ts: f64, rho: f64) -> (f64, f64) {
 
 impl Material {
     /// CO2 ice (Section 3): gamma_SV = 0.08 J/m^2 (Wood 1999); E and nu from the sound speeds
-    /// 2900 and 1650 m/s (Yamashita et al. 1997) at rho = 1560 kg/m^3 (Section 2.6), which gives
+    /// 2900 and 1650 m/s (Yamashita et al. 1997) at rho = 1560 kg/m^3 (Section 2.5), which gives
     /// E = 10.7 GPa and nu = 0.26. (Section 5.4 uses rho = 1650 kg/m^3; set `density` to change it.)
     pub fn co2() -> Self {
         let density = 1560.0;

@@ -77,7 +77,7 @@ fn e_break_relations() {
     assert!(rel((c.e_break_jkr() / c.m1()).sqrt(), 0.64 * c.v_stick_jkr()) < 0.01);
 }
 
-/// Section 2.6 vs 5.4: the paper states two CO2 densities. V_stick,JKR ∝ m*^(-1/2), so 1650 kg/m^3
+/// Section 2.5 vs 5.4: the paper states two CO2 densities. V_stick,JKR ∝ m*^(-1/2), so 1650 kg/m^3
 /// moves it by sqrt(1560/1650); 1560 is the one that reproduces 1.66e-2 m/s.
 #[test]
 fn co2_density_1650_scales_v_stick_jkr() {

@@ -1,7 +1,7 @@
 //! [`Collider`]: one head-on collision, from first contact to separation or to a proof of
-//! sticking (Sections 2.6 and 4).
+//! sticking (Sections 2.5 and 4).
 //!
-//! Section 2.6 of Arakawa & Krijt (2021): start at `delta = 0`, `delta_dot = V_in`,
+//! Section 2.5 of Arakawa & Krijt (2021): start at `delta = 0`, `delta_dot = V_in`,
 //! `beta = (1 + eps) k`; end when `beta = (1 - eps)/k`, where the spheres separate with
 //! `V_out = delta_dot`. Outcomes (Section 4): bouncing (`V_out < 0`, `e = -V_out/V_in > 0`),
 //! double collision (`V_out > 0`, `e < 0`), sticking (the contact never ends, `e = 0`; how it
@@ -15,7 +15,7 @@ use contact::Contact;
 use greenwood::CrackLaw;
 use numerics::OutOfRange;
 
-/// The fiducial eps = 0.01 of Section 2.6 (start at beta = (1 + eps) k, end at (1 - eps)/k).
+/// The fiducial eps = 0.01 of Section 2.5 (start at beta = (1 + eps) k, end at (1 - eps)/k).
 pub const EPS: f64 = 0.01;
 
 /// The largest modulus ratio k a collision is integrated for. A contact starts at

@@ -2,7 +2,7 @@
 //!
 //! One job: integrate a head-on collision of two viscoelastic adhesive bodies (two spheres or a
 //! sphere on a wall, `contact::Geometry`) and report its outcome (Arakawa & Krijt 2021,
-//! Sections 2.5, 2.6 and 4). It uses `contact` for the forces and units and `greenwood` for the
+//! Sections 2.5 and 4). It uses `contact` for the forces and units and `greenwood` for the
 //! crack law; it knows nothing of thresholds.
 //!
 //! ## Quick start
@@ -23,7 +23,7 @@
 //! ```text
 //! delta_ddot = -(F_E + F_D) / m*                                  (Sec. 2.5, Eq. d_dt)
 //! a_dot      = v(k, beta) E* gamma / (sigma0^2 T_vis),  beta = G_eff(a, delta)/gamma   (Sec. 2.3-2.4)
-//! t = 0: delta = 0, delta_dot = V_in, beta = (1 + eps) k;  end: beta = (1 - eps)/k, eps = 0.01   (Sec. 2.6)
+//! t = 0: delta = 0, delta_dot = V_in, beta = (1 + eps) k;  end: beta = (1 - eps)/k, eps = 0.01   (Sec. 2.5)
 //! e = -V_out / V_in                                                (Sec. 4.4)
 //! ```
 //! integrated with diffsol (by default its explicit Tsit45 where the collision is not stiff and

@@ -1,4 +1,4 @@
-//! Collisions of two identical spheres (Arakawa & Krijt 2021, Sections 2.5-2.6 and 4).
+//! Collisions of two identical spheres (Arakawa & Krijt 2021, Sections 2.5 and 4).
 
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
@@ -225,7 +225,7 @@ fn auto_method_picks_the_integrator_and_agrees_with_bdf() {
     }
 }
 
-/// The collision ODE (Section 2.6) is autonomous: continued from its state where delta returns
+/// The collision ODE (Section 2.5) is autonomous: continued from its state where delta returns
 /// to zero (its rebound), a collision ends as it does integrated from first contact. The
 /// reference is the full integration at a tenfold tighter tolerance; the continuation from the
 /// rebound of the same collision and from one interpolated halfway between collisions 1e-4
@@ -371,7 +371,7 @@ fn early_oscillation_decision_is_the_outcome() {
     }
 }
 
-/// Section 2.6: the trajectory starts at delta = 0, delta_dot = V_in, beta = (1 + eps) k and a
+/// Section 2.5: the trajectory starts at delta = 0, delta_dot = V_in, beta = (1 + eps) k and a
 /// bouncing one ends at beta = (1 - eps)/k.
 #[test]
 fn trajectory_initial_and_final_states() {

@@ -189,7 +189,7 @@ def test_trajectory():
     c = st.collide(CO2, t_vis=1e-9, v_in=0.045, trajectory=True)
     t = c.trajectory
     assert set(t) >= {"t", "a", "delta", "delta_dot", "beta"}
-    assert t["delta"][0] == 0.0 and t["delta_dot"][0] == 0.045  # Section 2.6
+    assert t["delta"][0] == 0.0 and t["delta_dot"][0] == 0.045  # Section 2.5
     assert abs(t["beta"][0] / 0.0101 - 1) < 1e-9  # beta = (1 + eps) k
     assert np.all(np.diff(t["t"]) > 0)
     assert st.collide(CO2, t_vis=1e-9, v_in=0.045).trajectory is None

@@ -77,7 +77,7 @@ pub const GUNDLACH_2015_T_VIS: (f64, f64) = (1.5e-6, 1e-10);
 /// below 150 K (Gundlach et al. 2018) to 0.19 from rolling friction (Gundlach et al. 2011).
 pub const H2O_GAMMA_SV_RANGE: (f64, f64) = (0.02, 0.19);
 
-/// The CO2 density of Section 5.4 (kg/m^3); Section 2.6 states 1560, which reproduces the
+/// The CO2 density of Section 5.4 (kg/m^3); Section 2.5 states 1560, which reproduces the
 /// paper's V_stick,JKR and is the preset's (`contact::Material::co2`).
 pub const CO2_DENSITY_SECTION_5_4: f64 = 1650.0;
 

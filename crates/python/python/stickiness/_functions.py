@@ -32,7 +32,7 @@ def collide(
     t_end: Optional[float] = None,
     method: str = "ode",
 ) -> Collision:
-    """One head-on collision at impact speed ``v_in`` (Sections 2.6, 4).
+    """One head-on collision at impact speed ``v_in`` (Sections 2.5, 4).
 
     Parameters
     ----------
@@ -75,7 +75,7 @@ def collide(
     Notes
     -----
     Start at delta = 0, delta_dot = V_in, beta = (1 + eps) k; end when beta = (1 - eps)/k,
-    eps = 0.01 (Section 2.6), or when the contact is proved never to end (sticking).
+    eps = 0.01 (Section 2.5), or when the contact is proved never to end (sticking).
 
     {broadcast}
 

@@ -113,7 +113,7 @@ class Dimensionless(_Columns):
 
 @dataclass(frozen=True)
 class Collision(_Columns):
-    """One head-on collision (Sections 2.6, 4).
+    """One head-on collision (Sections 2.5, 4).
 
     Attributes
     ----------

@@ -43,7 +43,7 @@
 //!   interpolation declines (next to the kink where the two kinds of bouncing meet, the band at
 //!   the cliff), a floor under both ratios read off the nodes ([`floor`]) answers that too,
 //!   with the same margin, for search limits up to [`floor::FLOOR_F_MAX`].
-//! - **The JKR corner.** Where c_a > 1e8 (T_vis below about 1e-14 s for 60 um CO2, grains of a
+//! - **The JKR corner.** Where c_a > 1e8 (T_vis below about 1.3e-17 s for 60 um CO2, grains of a
 //!   centimetre at 1e-16 s) the exact search needs millions of steps or is refused, while F has
 //!   converged in c_a to a few 1e-7: the nodes there are computed at c_a = 1e8 and the tables
 //!   answer with that converged value; below x = -17 (T_vis -> 0) with the value at -17.
