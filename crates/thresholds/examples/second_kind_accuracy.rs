@@ -1,0 +1,120 @@
+//! How accurate are the searches where the master tables decline? At the points of
+//! `table_accuracy`'s draw that the tables decline (`TABLE_SEED`, default 2026; `TABLE_N`
+//! points, default 2e4), three searches of both thresholds: the default search (what
+//! `method="search"` runs: collisions at rtol 1e-8, brackets of 1e-6), a node of the tables'
+//! build (collisions at rtol 1e-10, brackets of 1e-8) and a converged one (BDF at rtol 1e-12,
+//! atol 1e-15, brackets of 1e-10; BDF at 1e-13 moved it by at most 9e-7 at five points of the
+//! second kind). Each point is told apart by its kind of bouncing (first: a window of double
+//! collisions below V_stick, F_on < F; second: none, F_on = F); the misses of the default search
+//! and of the node against the converged search are printed, then their largest and median by
+//! kind (`docs/performance.md`, "What is left" (11)). A probe: nothing here is vouched for.
+//!
+//! ```sh
+//! cargo run --release -p thresholds --example second_kind_accuracy
+//! TABLE_SEED=7 TABLE_N=100000 cargo run --release -p thresholds --example second_kind_accuracy
+//! ```
+#![allow(clippy::unwrap_used, clippy::expect_used)]
+
+use rayon::prelude::*;
+use thresholds::master::build::{default_search, node, BuildConfig, Point};
+use thresholds::{CrackLaw, MasterTables, Method};
+
+#[allow(dead_code)]
+#[path = "common/domain.rs"]
+mod domain;
+
+/// The collisions of the converged search: BDF at this relative tolerance (a hundredth of a
+/// node's), absolute a thousandth of it, brackets of [`CONVERGED_REL_TOL`].
+const CONVERGED_RTOL: f64 = 1e-12;
+
+/// The brackets of the converged search: a hundredth of a node's.
+const CONVERGED_REL_TOL: f64 = 1e-10;
+
+/// `(F, F_on)` of a search (`F` NaN where nothing bounces below its limit).
+fn ratios(p: Point) -> Option<(f64, f64)> {
+    match p {
+        Point::Bounce { f_stick, f_onset } => Some((f_stick, f_onset)),
+        Point::OnsetOnly { f_onset } => Some((f64::NAN, f_onset)),
+        _ => None,
+    }
+}
+
+/// The largest and the median of `v` (NaN-free), `(0, 0)` if empty.
+fn max_median(mut v: Vec<f64>) -> (f64, f64) {
+    v.sort_by(f64::total_cmp);
+    (
+        v.last().copied().unwrap_or(0.0),
+        v.get(v.len() / 2).copied().unwrap_or(0.0),
+    )
+}
+
+fn main() {
+    let seed = std::env::var("TABLE_SEED").map_or(2026, |s| s.parse().unwrap());
+    let n: usize = std::env::var("TABLE_N").map_or(20000, |s| s.parse().unwrap());
+    let tables = MasterTables::standard();
+    let mut rng = domain::Rng(seed);
+    let points: Vec<[f64; 3]> = (0..n)
+        .map(|_| domain::draw(&mut rng, false))
+        .filter_map(|p| {
+            let (x, y, f_max) = p.table_coordinates();
+            tables
+                .ratios_at(x, y, p.k, f_max)
+                .is_none()
+                .then_some([x, y, p.k])
+        })
+        .collect();
+    let cfg = BuildConfig::standard();
+    let mut converged = BuildConfig::standard();
+    converged.rel_tol = CONVERGED_REL_TOL;
+    converged.solver.method = Method::Bdf;
+    converged.solver.rtol = CONVERGED_RTOL;
+    converged.solver.atol = 1e-3 * CONVERGED_RTOL;
+    // per point: its kind (true: the second) and the misses [default F, default F_on, node F,
+    // node F_on] against the converged search (NaN where a ratio has no value)
+    let rows: Vec<Option<(bool, [f64; 4])>> = points
+        .par_iter()
+        .map(|&[x, y, k]| {
+            let law = CrackLaw::new(k).unwrap();
+            let (fc, oc) = ratios(node(&converged, &law, x, y))?;
+            let (fd, od) = ratios(default_search(&cfg, &law, x, y))?;
+            let (fn_, on) = ratios(node(&cfg, &law, x, y))?;
+            let second = (oc - fc).abs() <= 1e-9 * fc;
+            let miss = [fd / fc - 1.0, od / oc - 1.0, fn_ / fc - 1.0, on / oc - 1.0];
+            println!(
+                "{x:.9} {y:.9} {k:.9} {} F {fc:.6} F_on {oc:.6}: default {:+.1e} {:+.1e}, node {:+.1e} {:+.1e}",
+                if second { "second" } else { "first " },
+                miss[0],
+                miss[1],
+                miss[2],
+                miss[3]
+            );
+            Some((second, miss))
+        })
+        .collect();
+    println!(
+        "{} points declined of {n} (seed {seed}); {} without both converged ratios",
+        points.len(),
+        rows.iter().filter(|r| r.is_none()).count()
+    );
+    for (second, name) in [(false, "first kind"), (true, "second kind")] {
+        let of: Vec<[f64; 4]> = rows
+            .iter()
+            .flatten()
+            .filter(|r| r.0 == second)
+            .map(|r| r.1)
+            .collect();
+        let stat = |j: usize| {
+            max_median(
+                of.iter()
+                    .map(|m| m[j].abs())
+                    .filter(|m| m.is_finite())
+                    .collect(),
+            )
+        };
+        let (d, dn, o) = (stat(0), stat(2), stat(1));
+        println!(
+            "{name}: {} points; |default - converged| F: max {:.1e}, median {:.1e}; F_on: max {:.1e}; |node - converged| F: max {:.1e}, median {:.1e}",
+            of.len(), d.0, d.1, o.0, dn.0, dn.1
+        );
+    }
+}
