@@ -1,5 +1,6 @@
 //! Would stencils of one kind of bouncing answer where the two kinds meet? At the points of
-//! `table_accuracy`'s draw (seed 2026) the tables still decline, each kind as a surface of its
+//! `table_accuracy`'s draw (`TABLE_SEED`, default 2026; `TABLE_N` points, default 2e4) the
+//! tables still decline, each kind as a surface of its
 //! own, read off the tables' nodes of that kind only: in each table of the k stencil, the four
 //! rows nearest y whose four nodes around x (in u = ln(x_s - x), shifted towards the kind by
 //! up to `shift` nodes) are all of that kind (first: F_on < F; second: F_on = F), the cubic in
