@@ -12,7 +12,10 @@
 //! ```sh
 //! cargo run --release -p thresholds --example second_kind_accuracy
 //! TABLE_SEED=7 TABLE_N=100000 cargo run --release -p thresholds --example second_kind_accuracy
+//! cargo run --release -p thresholds --example second_kind_accuracy -- band 400
 //! ```
+//! With `band N`: N random points of the band around the kink where the tables give F, each
+//! against the converged search (how many of the second kind: the tables should give none).
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use rayon::prelude::*;
@@ -48,7 +51,49 @@ fn max_median(mut v: Vec<f64>) -> (f64, f64) {
     )
 }
 
+/// Where the tables answer with a value in the band of the second kind: `n` random points of x
+/// -1 to 1.5, y -6 to -3.3, k log-uniform 0.005-0.05 (f_max 1000) at which the tables give F,
+/// each against the converged search: how many are of the second kind, and the largest miss.
+fn band(n: usize, converged: &BuildConfig) {
+    let tables = MasterTables::standard();
+    let mut rng = domain::Rng(11);
+    let points: Vec<([f64; 3], f64)> = std::iter::repeat_with(|| {
+        let (x, y) = (-1.0 + 2.5 * rng.next(), -6.0 + 2.7 * rng.next());
+        [x, y, rng.log_uniform(0.005, 0.05)]
+    })
+    .filter_map(|[x, y, k]| {
+        let f = tables.ratios_at(x, y, k, 1000.0)?.v_stick?;
+        Some(([x, y, k], f))
+    })
+    .take(n)
+    .collect();
+    let rows: Vec<(bool, f64)> = points
+        .par_iter()
+        .filter_map(|&([x, y, k], f)| {
+            let (fc, oc) = ratios(node(converged, &CrackLaw::new(k).unwrap(), x, y))?;
+            Some(((oc - fc).abs() <= 1e-9 * fc, (f / fc - 1.0).abs()))
+        })
+        .collect();
+    let second = rows.iter().filter(|r| r.0).count();
+    let worst = rows.iter().map(|r| r.1).fold(0.0, f64::max);
+    println!(
+        "band: the tables give F at {} points; against the converged search {second} of the second kind, the largest miss {worst:.1e}",
+        rows.len()
+    );
+}
+
 fn main() {
+    let mut converged = BuildConfig::standard();
+    converged.rel_tol = CONVERGED_REL_TOL;
+    converged.solver.method = Method::Bdf;
+    converged.solver.rtol = CONVERGED_RTOL;
+    converged.solver.atol = 1e-3 * CONVERGED_RTOL;
+    if let Some(n) = std::env::args()
+        .nth(2)
+        .filter(|_| std::env::args().nth(1).as_deref() == Some("band"))
+    {
+        return band(n.parse().unwrap(), &converged);
+    }
     let seed = std::env::var("TABLE_SEED").map_or(2026, |s| s.parse().unwrap());
     let n: usize = std::env::var("TABLE_N").map_or(20000, |s| s.parse().unwrap());
     let tables = MasterTables::standard();
@@ -64,11 +109,6 @@ fn main() {
         })
         .collect();
     let cfg = BuildConfig::standard();
-    let mut converged = BuildConfig::standard();
-    converged.rel_tol = CONVERGED_REL_TOL;
-    converged.solver.method = Method::Bdf;
-    converged.solver.rtol = CONVERGED_RTOL;
-    converged.solver.atol = 1e-3 * CONVERGED_RTOL;
     // per point: its kind (true: the second) and the misses [default F, default F_on, node F,
     // node F_on] against the converged search (NaN where a ratio has no value)
     let rows: Vec<Option<(bool, [f64; 4])>> = points
