@@ -88,23 +88,11 @@ fn main() {
     let tables = MasterTables::standard();
     let ks = tables.table_k().to_vec();
     let box_points: usize = args.next().map_or(0, |s| s.parse().unwrap());
-    // the draw of `table_accuracy` (its TABLE_SEED, and TABLE_N points: default 2026, 20000)
-    let seed = std::env::var("TABLE_SEED").map_or(2026, |s| s.parse().unwrap());
-    let n: usize = std::env::var("TABLE_N").map_or(20000, |s| s.parse().unwrap());
-    let mut rng = domain::Rng(seed);
     let points: Vec<[f64; 3]> = if box_points == 0 {
-        (0..n)
-            .map(|_| domain::draw(&mut rng, false))
-            .filter_map(|p| {
-                let (x, y, f_max) = p.table_coordinates();
-                tables
-                    .ratios_at(x, y, p.k, f_max)
-                    .is_none()
-                    .then_some([x, y, p.k])
-            })
-            .collect()
+        domain::declined_draw(tables)
     } else {
         // random points of the band around the kink that the tables decline (f_max 1000)
+        let mut rng = domain::Rng(2026);
         std::iter::repeat_with(|| {
             let x = -1.6 + 4.0 * rng.next();
             let y = -6.0 + 3.0 * rng.next();

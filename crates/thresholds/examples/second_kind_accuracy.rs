@@ -94,20 +94,8 @@ fn main() {
     {
         return band(n.parse().unwrap(), &converged);
     }
-    let seed = std::env::var("TABLE_SEED").map_or(2026, |s| s.parse().unwrap());
-    let n: usize = std::env::var("TABLE_N").map_or(20000, |s| s.parse().unwrap());
     let tables = MasterTables::standard();
-    let mut rng = domain::Rng(seed);
-    let points: Vec<[f64; 3]> = (0..n)
-        .map(|_| domain::draw(&mut rng, false))
-        .filter_map(|p| {
-            let (x, y, f_max) = p.table_coordinates();
-            tables
-                .ratios_at(x, y, p.k, f_max)
-                .is_none()
-                .then_some([x, y, p.k])
-        })
-        .collect();
+    let points = domain::declined_draw(tables);
     let cfg = BuildConfig::standard();
     // per point: its kind (true: the second) and the misses [default F, default F_on, node F,
     // node F_on] against the converged search (NaN where a ratio has no value)
@@ -132,7 +120,7 @@ fn main() {
         })
         .collect();
     println!(
-        "{} points declined of {n} (seed {seed}); {} without both converged ratios",
+        "{} points declined; {} without both converged ratios",
         points.len(),
         rows.iter().filter(|r| r.is_none()).count()
     );

@@ -166,3 +166,23 @@ pub fn impact_speed(rng: &mut Rng, v_stick: f64, v_on: f64, v_max: f64) -> f64 {
         rng.log_uniform(v_on, v_stick)
     }
 }
+
+/// The points `(x, y, k)` of `table_accuracy`'s draw of the whole domain that `tables` decline
+/// at the default search limit: `TABLE_N` points (default 2e4) of the generator seeded with
+/// `TABLE_SEED` (default 2026), as `table_accuracy` draws them.
+#[allow(dead_code)] // the probes of the declined points use it, the tests not
+pub fn declined_draw(tables: &MasterTables) -> Vec<[f64; 3]> {
+    let var =
+        |name: &str, default: u64| std::env::var(name).map_or(default, |s| s.parse().unwrap());
+    let mut rng = Rng(var("TABLE_SEED", 2026));
+    (0..var("TABLE_N", 20000))
+        .map(|_| draw(&mut rng, false))
+        .filter_map(|p| {
+            let (x, y, f_max) = p.table_coordinates();
+            tables
+                .ratios_at(x, y, p.k, f_max)
+                .is_none()
+                .then_some([x, y, p.k])
+        })
+        .collect()
+}
