@@ -273,7 +273,8 @@ impl From<LawName> for TVisLaw {
 /// The relaxation time, given or from a size law of R1.
 #[derive(Debug, Clone, Args)]
 pub struct TVisArgs {
-    /// Viscoelastic relaxation time T_vis (s, >= 0; 0 is the JKR limit where allowed).
+    // collide words its own: COLLIDE_T_VIS_HELP (main.rs)
+    /// Viscoelastic relaxation time T_vis (s, >= 0; 0 is the JKR limit).
     #[arg(long, allow_hyphen_values = true, conflicts_with = "t_vis_law")]
     pub t_vis: Option<f64>,
     /// T_vis from the size law of Section 5.3 at R1 = --radius: co2 = 1e-11 s (R1/1 um)^1.11,
@@ -331,14 +332,22 @@ impl PointArgs {
     }
 }
 
+/// `--t-vis` of `collide`: a collision has no JKR limit to answer at T_vis = 0.
+pub const COLLIDE_T_VIS_HELP: &str = "Viscoelastic relaxation time T_vis (s, > 0)";
+
+/// `--v-max` of `fit-t-vis`, whose searches have a limit of their own.
+pub const FIT_V_MAX_HELP: &str = "Highest impact speed searched for bouncing (m/s; default twice \
+     each target V_stick, raised to this where higher; at most 10000.0)";
+
 /// The threshold-search settings shared by v-stick, fit-t-vis, v-frag and sweep.
 #[derive(Debug, Clone, Args)]
 pub struct SearchArgs {
     /// Relative tolerance of the threshold brackets (dimensionless, 1e-15 < rel_tol < 0.5).
     #[arg(long, default_value = "1e-6", allow_hyphen_values = true)]
     pub rel_tol: f64,
-    /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; for fit-t-vis
-    /// twice each target, raised to this where higher; at most 10000.0).
+    // fit-t-vis words its own: FIT_V_MAX_HELP (main.rs)
+    /// Highest impact speed searched for bouncing (m/s; default 1000 V_stick,JKR; at most
+    /// 10000.0).
     #[arg(long, allow_hyphen_values = true)]
     pub v_max: Option<f64>,
     #[command(flatten)]

@@ -43,6 +43,7 @@ enum Command {
     /// others apart: v_out < 0, the grains separate (bouncing, e = -v_out/v_in > 0); v_out > 0,
     /// the contact ended while the grains approach again, so a second contact follows (double
     /// collision, e < 0). Sections 2.5 and 4 of Arakawa & Krijt (2021).
+    #[command(mut_arg("t_vis", |a| a.help(args::COLLIDE_T_VIS_HELP)))]
     Collide(commands::collide::CollideArgs),
     /// Threshold velocity for sticking V_stick and the onset of double collisions.
     VStick(commands::v_stick::VStickArgs),
@@ -50,6 +51,7 @@ enum Command {
     ///
     /// V_stick exceeds V_stick,JKR for every T_vis > 0, so a measured value at or below
     /// V_stick,JKR is refused; a range whose lower end is below it starts at t_vis_min = 0.
+    #[command(mut_arg("v_max", |a| a.help(args::FIT_V_MAX_HELP)))]
     FitTVis(commands::fit_t_vis::FitTVisArgs),
     /// Fragmentation velocity of aggregates V_frag = 10 V_stick.
     ///

@@ -281,3 +281,39 @@ def test_results_as_data_frames():
     traj = st.collide(CO2, 60e-6, 1e-9, 0.045, trajectory=True)
     assert "trajectory" not in traj.to_frame().columns
     assert len(st.jkr(CO2, [[1e-6, 2e-6], [3e-6, 4e-6]]).to_frame()) == 4
+
+
+def test_the_inputs_that_tell_rows_apart_go_first():
+    """``to_frame(k=..., v_in=...)``: each input broadcast to the result's shape as the call
+    broadcast it (numpy's rules, the source), flattened in the same C order; an input that does
+    not broadcast, or that repeats a field, is refused by name."""
+    pytest.importorskip("pandas")
+    t, k = np.geomspace(1e-10, 1e-8, 2)[:, None], [0.01, 0.02, 0.03]
+    r = st.v_stick(CO2, 60e-6, t, k=k)
+    df = r.to_frame(k=k)
+    assert list(df.columns[:2]) == ["k", "v_stick"]
+    np.testing.assert_array_equal(df["k"].to_numpy(), np.broadcast_to(k, (2, 3)).ravel())
+    # each row's V_stick is that of its own k: the same row of a call of that k alone
+    for row in (1, 5):
+        one = st.v_stick(CO2, 60e-6, df["t_vis"][row], k=df["k"][row])
+        assert one.v_stick == df["v_stick"][row]
+    v = np.linspace(0.03, 0.1, 4)
+    c = st.collide(CO2, 60e-6, 1e-9, v).to_frame(v_in=v)
+    np.testing.assert_array_equal(c["v_in"].to_numpy(), v)
+    with pytest.raises(ValueError, match=r"k of shape \(2,\) does not broadcast"):
+        r.to_frame(k=[0.01, 0.02])
+    with pytest.raises(ValueError, match="'t_vis' is a field"):
+        r.to_frame(t_vis=t)
+
+
+def test_sticking_criteria_have_the_broadcast_shape():
+    """An array call's ``sticking_criterion`` is an object array shaped like ``outcome``: a
+    criterion exactly where the collision sticks (Section 4.4: sticking is decided by the energy
+    bound or the oscillations), None elsewhere; a scalar call's a str or None."""
+    c = st.collide(CO2, [[60e-6], [30e-6]], 1e-9, [0.03, 0.05, 0.2])
+    assert c.sticking_criterion.shape == c.outcome.shape == (2, 3)
+    sticks = c.outcome == "sticking"
+    assert sticks.any() and not sticks.all()
+    assert all(x in ("energy_bound", "oscillations") for x in c.sticking_criterion[sticks])
+    assert all(x is None for x in c.sticking_criterion[~sticks])
+    assert st.collide(CO2, 60e-6, 1e-9, 0.2).sticking_criterion is None

@@ -23,8 +23,9 @@ pub fn run(args: &VFragArgs) -> Result<Report, CliError> {
     let f = thresholds::fragmentation(&setup.contact, &law, t_vis, &opts)?;
     let v_max = f.no_bouncing_below.unwrap_or(opts.v_max_for(f.v_stick_jkr));
     setup.with_input("v_max", v_max);
+    // the monomers' pair, whose V_stick sets V_frag (Section 6)
     let what = format!(
-        "Fragmentation velocity of aggregates of {} monomers",
+        "Fragmentation velocity of aggregates, V_frag = 10 V_stick of {}",
         setup.describe()
     );
     let mut r = point_report(what, &setup, t_vis, law.k());

@@ -36,10 +36,17 @@ PARAMETERS: Dict[str, str] = {
         (R1/1 um)^1.11, T_vis,H2O = 1e-10 s (R1/1.5 um)^1.11. Excludes ``t_vis``.""",
     "v_max": """v_max : float or Quantity, optional
         Highest impact speed searched for bouncing (m/s, at most 1e4). Default 1000
-        V_stick,JKR; for :func:`fit_t_vis` twice each trial's target, raised to ``v_max``
-        where that is higher (a ``v_max`` below V_stick + dV is an error).""",
+        V_stick,JKR.""",
+    "v_max_fit": """v_max : float or Quantity, optional
+        Highest impact speed searched for bouncing (m/s, at most 1e4). Default twice each
+        trial's target V_stick, raised to ``v_max`` where that is higher (a ``v_max`` below
+        V_stick + dV is an error).""",
     "rel_tol": """rel_tol : float, optional
-        Relative width of the final brackets of the search (dimensionless). Default 1e-6.""",
+        Relative width of the final brackets of the search (dimensionless, 1e-15 < rel_tol <
+        0.5). Default 1e-6.""",
+    "monomer_radius": """radius : float, array_like or Quantity, optional
+        Radius of the aggregates' monomers (m): R1 of the two identical spheres whose V_stick
+        sets V_frag (Section 6; with ``radius2`` or ``wall``, R1 of that pair). Default 60e-6.""",
     "method": """method : {'table', 'search'}, optional
         ``'table'`` (default): the master tables of V_stick / V_stick,JKR over the two
         dimensionless numbers and k, about a microsecond a point and within 1e-5 of the search
@@ -61,13 +68,15 @@ PARAMETERS: Dict[str, str] = {
 }
 
 #: Parameters that always come together, under one name: the second body (``radius2``,
-#: ``wall``) and the search settings (``v_max``, ``rel_tol``, ``method``).
+#: ``wall``) and the search settings (``v_max``, ``rel_tol``, ``method``; ``fit_t_vis``'s
+#: ``v_max`` has its own default).
 PARAMETERS.update(
     {
         group: "\n    ".join(PARAMETERS[name] for name in names)
         for group, names in (
             ("partner", ("radius2", "wall")),
             ("search", ("v_max", "rel_tol", "method")),
+            ("search_fit", ("v_max_fit", "rel_tol", "method")),
         )
     }
 )

@@ -54,7 +54,7 @@ def collide(
         ``'ode'`` (default): integrate the collision (milliseconds; everything, including the
         contact time). ``'table'``: the outcome, e and V_out from the restitution tables, within
         1e-4 of the ODE in e, in microseconds, where they vouch for it (k from 0.005 to
-        0.0504; not within a thin band at the cliff or the onset of double collisions; at most
+        0.050397 = 0.005 2^(10/3); not within a thin band at the cliff or the onset of double collisions; at most
         1.3e4 V_stick; beyond the cliff, sticking below the search limit); the ODE elsewhere
         (with BDF where the tables cover k: e within 1.3e-6 of ``'ode'`` at a third of its
         time), and with ``trajectory`` or ``t_end``. The result's ``method`` says which
@@ -104,14 +104,15 @@ def collide(
     d = b.call(_core.collide, m, *args, trajectory, core_method)
     b.warn(d["warnings"], stacklevel=3)
     contact_time = b.out(d["contact_time"])
-    criterion = d["sticking_criterion"]
+    # str or None each: an object array of the broadcast shape, like the other fields
+    criterion: Any = np.array(d["sticking_criterion"], dtype=object).reshape(b.shape)
     outcome: Any = np.asarray(d["outcome"]).reshape(b.shape)
     e = b.out(d["e"])
     observed = b.out(d["e_observed"])
     if b.scalar:
         outcome = str(d["outcome"][0])
         contact_time = None if outcome == "sticking" else contact_time
-        criterion = criterion[0]
+        criterion = d["sticking_criterion"][0]
     return Collision(
         outcome=outcome,
         e=e,
@@ -230,7 +231,7 @@ def v_frag(
     Parameters
     ----------
     {material}
-    {radius}
+    {monomer_radius}
     t_vis : float, array_like or Quantity, optional
         Relaxation time T_vis (s, >= 0). Default 0: the JKR limit, V_frag,JKR.
     {k}
@@ -294,7 +295,7 @@ def fit_t_vis(
         Its uncertainty dV (m/s, 0 <= dV < V_stick). Default 0.
     {k}
     {partner}
-    {search}
+    {search_fit}
 
     Returns
     -------

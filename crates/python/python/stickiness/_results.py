@@ -7,7 +7,7 @@ Fields hold a Python ``float`` (or ``str``) when the call's arguments were scala
 from __future__ import annotations
 
 from dataclasses import dataclass, fields
-from typing import Any, Dict, List, Optional, Union
+from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
@@ -20,23 +20,37 @@ StrOrArray = Union[str, np.ndarray]
 class _Columns:
     """What every result can do: give its fields as a table, one row an element."""
 
-    def to_frame(self) -> Any:
+    def to_frame(self, **inputs: Any) -> Any:
         """The fields as a ``pandas.DataFrame``: one column a field (SI units, as the
         attributes), one row an element of the call, flattened in C order (one row for a call
         of scalars); a scalar call's ``contact_time`` of ``None`` becomes NaN, as in arrays. A
         recorded ``trajectory`` is left out (its arrays have one row a solver step).
 
+        Parameters
+        ----------
+        **inputs : array_like
+            Columns to put first, each broadcast to the result's shape like the call's
+            arguments (``k=[0.01, 0.02]``, ``radius=r``): the inputs that tell the rows of a
+            broadcast call apart (SI units, as the call took them; a ``Quantity`` is given
+            without its unit).
+
         Raises
         ------
         ImportError
             pandas missing: ``pip install 'stickiness[infer]'`` (or pandas alone).
+        ValueError
+            An input that does not broadcast to the result's shape, or that shares a field's
+            name.
 
         Examples
         --------
-        >>> import stickiness as st
+        >>> import numpy as np, stickiness as st
         >>> df = st.v_stick("co2", [30e-6, 60e-6], 1e-9).to_frame()
         >>> list(df.columns[:2]), len(df)
         (['v_stick', 'v_double_onset'], 2)
+        >>> r = st.v_stick("co2", 60e-6, [[1e-10], [1e-9]], k=[0.01, 0.02])
+        >>> list(r.to_frame(k=[0.01, 0.02])["k"])
+        [0.01, 0.02, 0.01, 0.02]
         """
         try:
             import pandas as pd  # type: ignore[import-untyped,unused-ignore]
@@ -44,16 +58,26 @@ class _Columns:
             raise ImportError(
                 "to_frame needs pandas: pip install 'stickiness[infer]' (or pandas)"
             ) from None
+        names = [f.name for f in fields(self)]  # type: ignore[arg-type]
+        shape = np.shape(getattr(self, names[0]))
         columns = {}
-        for f in fields(self):  # type: ignore[arg-type]
-            if f.name == "trajectory":
+        for name, value in inputs.items():
+            if name in names:
+                raise ValueError(f"to_frame: {name!r} is a field of the result already")
+            try:
+                columns[name] = np.broadcast_to(np.asarray(value), shape).ravel()
+            except ValueError:
+                raise ValueError(
+                    f"to_frame: {name} of shape {np.shape(value)} does not broadcast to the "
+                    f"result's shape {shape}"
+                ) from None
+        for name in names:
+            if name == "trajectory":
                 continue
-            value = getattr(self, f.name)
-            if f.name == "contact_time" and value is None:
+            value = getattr(self, name)
+            if name == "contact_time" and value is None:
                 value = np.nan
-            elif isinstance(value, list):  # sticking criteria of an array call: str or None
-                value = np.array(value, dtype=object)
-            columns[f.name] = np.ravel(value)
+            columns[name] = np.ravel(value)
         return pd.DataFrame(columns)
 
 
@@ -133,8 +157,9 @@ class Collision(_Columns):
         where the restitution tables answered (``method='table'``: they hold e and V_out only).
     v_stick_jkr : float or ndarray
         V_stick,JKR of the contact (m/s).
-    sticking_criterion : str, list or None
-        How sticking was decided: ``'energy_bound'`` or ``'oscillations'``; None otherwise.
+    sticking_criterion : str, ndarray of object or None
+        How sticking was decided: ``'energy_bound'`` or ``'oscillations'``; None otherwise (in
+        arrays, an object array of the broadcast shape holding those).
     trajectory : dict of ndarray or None
         With ``trajectory=True``: ``t`` (s), ``a``, ``delta`` (m), ``delta_dot`` (m/s),
         ``beta`` (dimensionless) and ``energy`` (J) at every solver step; None otherwise.
@@ -148,7 +173,7 @@ class Collision(_Columns):
     v_out: FloatOrArray
     contact_time: Union[None, float, np.ndarray]
     v_stick_jkr: FloatOrArray
-    sticking_criterion: Union[None, str, List[Optional[str]]]
+    sticking_criterion: Union[None, str, np.ndarray]
     e_observed: FloatOrArray
     trajectory: Optional[Dict[str, np.ndarray]] = None
     method: StrOrArray = "ode"

@@ -35,26 +35,28 @@ pub struct SweepArgs {
     /// Materials: a comma list of presets (co2, h2o) and JSON file paths.
     #[arg(long, default_value = "co2")]
     pub material: String,
-    /// Surface free energies gamma_SV (J/m^2) replacing each material's: a comma list or
-    /// START:STOP:N (N log-spaced values, both ends included).
+    /// Surface free energies gamma_SV (J/m^2, each > 0) replacing each material's: a comma list
+    /// or START:STOP:N (N log-spaced values, both ends included).
     #[arg(long, allow_hyphen_values = true)]
     pub gamma_sv: Option<String>,
-    /// Radii R1 (m): a comma list or START:STOP:N.
+    /// Radii R1 (m, each > 0): a comma list or START:STOP:N.
     #[arg(long, default_value = "0.00006", allow_hyphen_values = true)]
     pub radius: String,
-    /// Radii R2 of the second sphere (m): a comma list or START:STOP:N; default: R2 = R1.
+    /// Radii R2 of the second sphere (m, each > 0): a comma list or START:STOP:N; default: R2 =
+    /// R1.
     #[arg(long, allow_hyphen_values = true, conflicts_with = "wall")]
     pub radius2: Option<String>,
     /// A sphere on a flat wall of the same material at every point.
     #[arg(long)]
     pub wall: bool,
-    /// Relaxation times T_vis (s): a comma list or START:STOP:N.
+    /// Relaxation times T_vis (s, each >= 0; 0 is the JKR limit): a comma list or START:STOP:N.
     #[arg(long, allow_hyphen_values = true, conflicts_with = "t_vis_law")]
     pub t_vis: Option<String>,
     /// T_vis from the size law of Section 5.3 at each radius instead of a T_vis axis.
     #[arg(long, value_enum, ignore_case = true)]
     pub t_vis_law: Option<crate::args::LawName>,
-    /// Modulus ratios k (dimensionless): a comma list or START:STOP:N.
+    /// Modulus ratios k (dimensionless, each 0 < k <= 0.9; tables for 0.005-0.05): a comma list
+    /// or START:STOP:N.
     #[arg(long, default_value = "0.01", allow_hyphen_values = true)]
     pub k: String,
     #[command(flatten)]
