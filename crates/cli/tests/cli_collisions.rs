@@ -147,6 +147,25 @@ fn tabor_warning_for_small_grains() {
     assert_eq!(j["warnings"].as_array().map(Vec::len), Some(0));
 }
 
+/// V_stick >= V_stick,JKR at every T_vis (Section 5.1): a `--v-max` below V_stick,JKR finds no
+/// bouncing whatever the grains, and says so in a warning (stderr and the JSON "warnings"); a
+/// `--v-max` above it, none.
+#[test]
+fn a_search_limit_below_the_jkr_threshold_is_warned_of() {
+    let j = json_of("v-stick --t-vis 1e-9 --v-max 0.01 --json");
+    assert!(j["v_stick"].is_null() && j["v_stick_jkr"].as_f64().unwrap() > 0.01);
+    let w = j["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 1);
+    assert!(w[0]
+        .as_str()
+        .unwrap()
+        .starts_with("--v-max 0.01 m/s is below V_stick,JKR"));
+    let j = json_of("v-frag --t-vis 1e-9 --v-max 0.01 --json");
+    assert_eq!(j["warnings"].as_array().map(Vec::len), Some(1));
+    let j = json_of("v-stick --t-vis 1e-9 --v-max 0.02 --json");
+    assert_eq!(j["warnings"].as_array().map(Vec::len), Some(0));
+}
+
 /// `--method` (default `table`): the master table answers within 1e-5 of the exact search
 /// (Section 4.4's CO2 case), the JSON echoes the choice in "input" and says in "method" which
 /// path answered; beyond the no-bouncing cliff (T_vis = 1e-6 s) the table says "no bouncing"

@@ -57,6 +57,15 @@ fn per_element<'py, T: Answer, const N: usize>(
     columns(py, &cols.map(|c| c.0), found, true, e.scalar)
 }
 
+/// Element `i`'s warning of a `v_max` below its V_stick,JKR (m/s), if any
+/// ([`SearchOptions::v_max_warning`]).
+fn v_max_warned(i: usize, opts: &thresholds::SearchOptions, v_stick_jkr: f64) -> Warned {
+    opts.v_max_warning(v_stick_jkr, "v_max=")
+        .map(|m| (i, "v_max", m))
+        .into_iter()
+        .collect()
+}
+
 /// The columns of [`v_stick`].
 const V_STICK: [Column<StickingThresholds>; 5] = [
     ("v_stick", |t| t.v_stick),
@@ -71,7 +80,8 @@ elementwise! {
     /// `gamma_sv` (J/m^2), if given, replaces the material's per element.
     fn v_stick(py, e: Elements[t_vis; k; gamma_sv], opts: SearchOptions) {
         per_element(py, &e, V_STICK, |i, c, law| {
-            Ok((thresholds::sticking_thresholds(c, law, t_vis[i], &opts)?, Vec::new()))
+            let t = thresholds::sticking_thresholds(c, law, t_vis[i], &opts)?;
+            Ok((t, v_max_warned(i, &opts, t.v_stick_jkr)))
         })
     }
 }
@@ -90,7 +100,8 @@ elementwise! {
     /// V_frag = 10 V_stick with V_stick, T_vis, V_frag,JKR, V_stick,JKR, no_bouncing_below.
     fn v_frag(py, e: Elements[t_vis; k; gamma_sv], opts: SearchOptions) {
         per_element(py, &e, V_FRAG, |i, c, law| {
-            Ok((thresholds::fragmentation(c, law, t_vis[i], &opts)?, Vec::new()))
+            let f = thresholds::fragmentation(c, law, t_vis[i], &opts)?;
+            Ok((f, v_max_warned(i, &opts, f.v_stick_jkr)))
         })
     }
 }

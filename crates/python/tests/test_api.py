@@ -165,6 +165,23 @@ def test_warnings():
     assert issubclass(st.SolverError, RuntimeError)
 
 
+def test_a_search_limit_below_the_jkr_threshold_is_warned_of():
+    """V_stick >= V_stick,JKR at every T_vis (Section 5.1), so a ``v_max`` below V_stick,JKR
+    (here a slip of cm/s for m/s) finds no bouncing whatever the grains: the answer stands, with
+    a warning naming both speeds, in ``v_stick`` and ``v_frag``, per element in arrays; the
+    default limit and any ``v_max`` above V_stick,JKR give none."""
+    jkr = st.jkr(CO2, 60e-6).v_stick_jkr
+    with pytest.warns(st.StickinessWarning, match=r"v_max=0\.01 m/s is below V_stick,JKR"):
+        r = st.v_stick(CO2, 60e-6, 1e-9, v_max=0.01)
+    assert math.isnan(r.v_stick) and r.no_bouncing_below == 0.01 < jkr
+    with pytest.warns(st.StickinessWarning, match=r"1 of 2 elements"):
+        st.v_frag(CO2, [60e-6, 1e-6], 1e-9, v_max=0.1)  # 1 um: V_stick,JKR 0.50 m/s; 60 um 0.017
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        st.v_stick(CO2, 60e-6, 1e-9)
+        st.v_stick(CO2, 60e-6, 1e-9, v_max=2 * jkr)
+
+
 def test_material_value_semantics(tmp_path):
     assert st.Material.co2() == CO2 and st.Material.h2o() != CO2
     assert hash(st.Material.co2()) == hash(CO2)

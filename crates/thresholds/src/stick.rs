@@ -225,6 +225,28 @@ impl SearchOptions {
         self.v_max
             .unwrap_or((DEFAULT_V_MAX_OVER_JKR * v_stick_jkr).min(V_SEARCH_LIMIT))
     }
+
+    /// A warning where a `v_max` given lies below `v_stick_jkr` (m/s), the least V_stick at any
+    /// T_vis (Section 5.1: V_stick grows from V_stick,JKR as T_vis grows): no collision bounces
+    /// below it, so "no bouncing below v_max" says nothing of the grains (often a slip of
+    /// units). `v_max_as` names the limit as the user gave it (`"--v-max "`, `"v_max="`).
+    /// `None` for the default limit, which lies far above.
+    ///
+    /// ```
+    /// # use thresholds::SearchOptions;
+    /// let opts = SearchOptions { v_max: Some(0.01), ..SearchOptions::default() };
+    /// let w = opts.v_max_warning(0.0166, "v_max=").unwrap();
+    /// assert!(w.starts_with("v_max=0.01 m/s is below V_stick,JKR = 0.0166 m/s"));
+    /// assert!(SearchOptions::default().v_max_warning(0.0166, "v_max=").is_none());
+    /// ```
+    pub fn v_max_warning(&self, v_stick_jkr: f64, v_max_as: &str) -> Option<String> {
+        let v_max = self.v_max.filter(|&v| v < v_stick_jkr)?;
+        Some(format!(
+            "{v_max_as}{} m/s is below V_stick,JKR = {} m/s, the least V_stick at any T_vis: no collision bounces below it",
+            number(v_max),
+            number(v_stick_jkr)
+        ))
+    }
 }
 
 impl Default for SearchOptions {

@@ -29,6 +29,7 @@ pub fn run(args: &VFragArgs) -> Result<Report, CliError> {
         setup.describe()
     );
     let mut r = point_report(what, &setup, t_vis, law.k());
+    r.warn(opts.v_max_warning(f.v_stick_jkr, "--v-max "));
     v_stick_rows(&mut r, "v_frag", f.v_frag, v_max)?;
     v_stick_rows(&mut r, "v_stick", f.v_stick, v_max)?;
     r.number("t_vis", t_vis, "s")?;

@@ -26,6 +26,7 @@ pub fn run(args: &VStickArgs) -> Result<Report, CliError> {
     setup.with_input("v_max", th.v_max);
     let what = format!("Sticking thresholds of {}", setup.describe());
     let mut r = point_report(what, &setup, t_vis, law.k());
+    r.warn(opts.v_max_warning(th.v_stick_jkr, "--v-max "));
     v_stick_rows(&mut r, "v_stick", th.v_stick, th.v_max)?;
     r.optional(
         "v_double_onset",
