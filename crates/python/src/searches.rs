@@ -15,25 +15,24 @@ use thresholds::{
 trait Answer: Send {
     /// Which method answered.
     fn method(&self) -> ThresholdMethod;
+    /// V_stick,JKR of the element's contact (m/s).
+    fn v_stick_jkr(&self) -> f64;
 }
 
-impl Answer for StickingThresholds {
-    fn method(&self) -> ThresholdMethod {
-        self.method
-    }
+/// [`Answer`] of each result type: its `method` and `v_stick_jkr` fields.
+macro_rules! answer {
+    ($($t:ty),*) => {$(
+        impl Answer for $t {
+            fn method(&self) -> ThresholdMethod {
+                self.method
+            }
+            fn v_stick_jkr(&self) -> f64 {
+                self.v_stick_jkr
+            }
+        }
+    )*};
 }
-
-impl Answer for Fragmentation {
-    fn method(&self) -> ThresholdMethod {
-        self.method
-    }
-}
-
-impl Answer for TVisFit {
-    fn method(&self) -> ThresholdMethod {
-        self.method
-    }
-}
+answer!(StickingThresholds, Fragmentation, TVisFit);
 
 /// A column of a threshold function: its name and its value in an element's answer (NaN for
 /// `None`).
@@ -57,13 +56,11 @@ fn per_element<'py, T: Answer, const N: usize>(
     columns(py, &cols.map(|c| c.0), found, true, e.scalar)
 }
 
-/// Element `i`'s warning of a `v_max` below its V_stick,JKR (m/s), if any
-/// ([`SearchOptions::v_max_warning`]).
-fn v_max_warned(i: usize, opts: &thresholds::SearchOptions, v_stick_jkr: f64) -> Warned {
-    opts.v_max_warning(v_stick_jkr, "v_max=")
-        .map(|m| (i, "v_max", m))
-        .into_iter()
-        .collect()
+/// `answer` of element `i` with its warning of a `v_max` below its V_stick,JKR (m/s), if any
+/// ([`thresholds::SearchOptions::v_max_warning`]).
+fn v_max_warned<T: Answer>(i: usize, opts: &thresholds::SearchOptions, answer: T) -> (T, Warned) {
+    let w = opts.v_max_warning(answer.v_stick_jkr(), "v_max=");
+    (answer, w.map(|m| (i, "v_max", m)).into_iter().collect())
 }
 
 /// The columns of [`v_stick`].
@@ -80,8 +77,7 @@ elementwise! {
     /// `gamma_sv` (J/m^2), if given, replaces the material's per element.
     fn v_stick(py, e: Elements[t_vis; k; gamma_sv], opts: SearchOptions) {
         per_element(py, &e, V_STICK, |i, c, law| {
-            let t = thresholds::sticking_thresholds(c, law, t_vis[i], &opts)?;
-            Ok((t, v_max_warned(i, &opts, t.v_stick_jkr)))
+            Ok(v_max_warned(i, &opts, thresholds::sticking_thresholds(c, law, t_vis[i], &opts)?))
         })
     }
 }
@@ -100,8 +96,7 @@ elementwise! {
     /// V_frag = 10 V_stick with V_stick, T_vis, V_frag,JKR, V_stick,JKR, no_bouncing_below.
     fn v_frag(py, e: Elements[t_vis; k; gamma_sv], opts: SearchOptions) {
         per_element(py, &e, V_FRAG, |i, c, law| {
-            let f = thresholds::fragmentation(c, law, t_vis[i], &opts)?;
-            Ok((f, v_max_warned(i, &opts, f.v_stick_jkr)))
+            Ok(v_max_warned(i, &opts, thresholds::fragmentation(c, law, t_vis[i], &opts)?))
         })
     }
 }
