@@ -7,7 +7,7 @@
 //! second kind). Each point is told apart by its kind of bouncing (first: a window of double
 //! collisions below V_stick, F_on < F; second: none, F_on = F); the misses of the default search
 //! and of the node against the converged search are printed, then their largest and median by
-//! kind (`docs/performance.md`, "What is left" (11)). A probe: nothing here is vouched for.
+//! kind (`docs/performance.md`, "What is left" (15)). A probe: nothing here is vouched for.
 //!
 //! ```sh
 //! cargo run --release -p thresholds --example second_kind_accuracy

@@ -31,8 +31,8 @@ class _Columns:
         **inputs : array_like
             Columns to put first, each broadcast to the result's shape like the call's
             arguments (``k=[0.01, 0.02]``, ``radius=r``): the inputs that tell the rows of a
-            broadcast call apart (SI units, as the call took them; a ``Quantity`` is given
-            without its unit).
+            broadcast call apart (SI units, as the call took them; a ``Quantity`` is
+            converted to SI).
 
         Raises
         ------
@@ -64,12 +64,18 @@ class _Columns:
         for name, value in inputs.items():
             if name in names:
                 raise ValueError(f"to_frame: {name!r} is a field of the result already")
+            if hasattr(value, "unit"):  # an astropy Quantity: its value in SI
+                value = value.si.value
             try:
-                columns[name] = np.broadcast_to(np.asarray(value), shape).ravel()
+                arr = np.asarray(value)
+            except ValueError:
+                raise ValueError(f"to_frame: {name} is ragged, not an array") from None
+            try:
+                columns[name] = np.broadcast_to(arr, shape).ravel()
             except ValueError:
                 raise ValueError(
-                    f"to_frame: {name} of shape {np.shape(value)} does not broadcast to the "
-                    f"result's shape {shape}"
+                    f"to_frame: {name} of shape {arr.shape} does not broadcast to the result's "
+                    f"shape {shape}"
                 ) from None
         for name in names:
             if name == "trajectory":
