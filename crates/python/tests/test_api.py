@@ -321,6 +321,11 @@ def test_the_inputs_that_tell_rows_apart_go_first():
         r.to_frame(k=[0.01, 0.02])
     with pytest.raises(ValueError, match="'t_vis' is a field"):
         r.to_frame(t_vis=t)
+    with pytest.raises(ValueError, match="k is ragged"):
+        r.to_frame(k=[[0.01], [0.02, 0.03]])
+    u = pytest.importorskip("astropy.units")
+    df = st.jkr(CO2, [30e-6, 60e-6]).to_frame(radius=[30, 60] * u.um)  # in SI, as the call
+    np.testing.assert_allclose(df["radius"].to_numpy(), [30e-6, 60e-6], rtol=1e-15)
 
 
 def test_sticking_criteria_have_the_broadcast_shape():
