@@ -164,6 +164,7 @@ impl MaterialArgs {
 /// The two bodies: a sphere of `--radius` and one of `--radius2`, or a wall.
 #[derive(Debug, Clone, Args)]
 pub struct GeometryArgs {
+    // v-frag words its own: V_FRAG_RADIUS_HELP (main.rs)
     /// Radius R1 of the (first) sphere (m, > 0).
     #[arg(long, default_value = "0.00006", allow_hyphen_values = true)]
     pub radius: f64,
@@ -334,6 +335,10 @@ impl PointArgs {
 
 /// `--t-vis` of `collide`: a collision has no JKR limit to answer at T_vis = 0.
 pub const COLLIDE_T_VIS_HELP: &str = "Viscoelastic relaxation time T_vis (s, > 0)";
+
+/// `--radius` of `v-frag`: the aggregates' monomers (Section 6).
+pub const V_FRAG_RADIUS_HELP: &str = "Radius of the aggregates' monomers (m, > 0): R1 of the two \
+     identical spheres whose V_stick sets V_frag (with --radius2 or --wall, R1 of that pair)";
 
 /// `--v-max` of `fit-t-vis`, whose searches have a limit of their own.
 pub const FIT_V_MAX_HELP: &str = "Highest impact speed searched for bouncing (m/s; default twice \

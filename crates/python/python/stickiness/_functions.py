@@ -54,8 +54,8 @@ def collide(
         ``'ode'`` (default): integrate the collision (milliseconds; everything, including the
         contact time). ``'table'``: the outcome, e and V_out from the restitution tables, within
         1e-4 of the ODE in e, in microseconds, where they vouch for it (k from 0.005 to
-        0.050397 = 0.005 2^(10/3); not within a thin band at the cliff or the onset of double collisions; at most
-        1.3e4 V_stick; beyond the cliff, sticking below the search limit); the ODE elsewhere
+        0.050397 = 0.005 2^(10/3); not within a thin band at the cliff or the onset of double
+        collisions; at most 1.3e4 V_stick; beyond the cliff, sticking below the search limit); the ODE elsewhere
         (with BDF where the tables cover k: e within 1.3e-6 of ``'ode'`` at a third of its
         time), and with ``trajectory`` or ``t_end``. The result's ``method`` says which
         answered; a table answer has no contact time (NaN; None for a sticking scalar, as from

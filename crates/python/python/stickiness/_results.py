@@ -11,6 +11,7 @@ from typing import Any, Dict, Optional, Union
 
 import numpy as np
 
+from . import _args
 from ._args import FloatOrArray
 
 #: A string for scalar calls, an array of strings for array calls.
@@ -64,8 +65,9 @@ class _Columns:
         for name, value in inputs.items():
             if name in names:
                 raise ValueError(f"to_frame: {name!r} is a field of the result already")
-            if hasattr(value, "unit"):  # an astropy Quantity: its value in SI
-                value = value.si.value
+            if _args._is_quantity(value):
+                # in the unit the call takes under that name (a wrong dimension named), else SI
+                value = _args.si(name, value) if name in _args.UNITS else value.si.value
             try:
                 arr = np.asarray(value)
             except ValueError:
