@@ -20,18 +20,11 @@
 
 use rayon::prelude::*;
 use thresholds::master::build::{default_search, node, BuildConfig, Point};
-use thresholds::{CrackLaw, MasterTables, Method};
+use thresholds::{CrackLaw, MasterTables};
 
 #[allow(dead_code)]
 #[path = "common/domain.rs"]
 mod domain;
-
-/// The collisions of the converged search: BDF at this relative tolerance (a hundredth of a
-/// node's), absolute a thousandth of it, brackets of [`CONVERGED_REL_TOL`].
-const CONVERGED_RTOL: f64 = 1e-12;
-
-/// The brackets of the converged search: a hundredth of a node's.
-const CONVERGED_REL_TOL: f64 = 1e-10;
 
 /// `(F, F_on)` of a search (`F` NaN where nothing bounces below its limit).
 fn ratios(p: Point) -> Option<(f64, f64)> {
@@ -83,11 +76,7 @@ fn band(n: usize, converged: &BuildConfig) {
 }
 
 fn main() {
-    let mut converged = BuildConfig::standard();
-    converged.rel_tol = CONVERGED_REL_TOL;
-    converged.solver.method = Method::Bdf;
-    converged.solver.rtol = CONVERGED_RTOL;
-    converged.solver.atol = 1e-3 * CONVERGED_RTOL;
+    let converged = BuildConfig::converged();
     if let Some(n) = std::env::args()
         .nth(2)
         .filter(|_| std::env::args().nth(1).as_deref() == Some("band"))

@@ -8,7 +8,7 @@
 #![allow(clippy::unwrap_used, clippy::expect_used)]
 
 use thresholds::master::build::{default_search, node, BuildConfig, Point};
-use thresholds::{CrackLaw, MasterTables, Method};
+use thresholds::{CrackLaw, MasterTables};
 
 /// Points `(x, y, k)` of `examples/table_accuracy.rs`'s draw (seed 2026) that the tables
 /// decline, of the second kind, F = 147-510 (below the default search limit of 1000
@@ -24,16 +24,6 @@ const SECOND_KIND: [(f64, f64, f64); 3] = [
 /// it), next to the kink but short of the crossing, to nine digits.
 const FIRST_KIND: (f64, f64, f64) = (-0.480429255, -4.275621428, 0.048556687);
 
-/// The converged search: the build's node with BDF at rtol 1e-12 and brackets of 1e-10.
-fn converged() -> BuildConfig {
-    let mut cfg = BuildConfig::standard();
-    cfg.rel_tol = 1e-10;
-    cfg.solver.method = Method::Bdf;
-    cfg.solver.rtol = 1e-12;
-    cfg.solver.atol = 1e-15;
-    cfg
-}
-
 /// `(F, F_on)` of a search that found both below its limit.
 fn both(p: Point) -> (f64, f64) {
     match p {
@@ -44,7 +34,7 @@ fn both(p: Point) -> (f64, f64) {
 
 #[test]
 fn in_the_second_kind_the_default_search_strays_and_the_tables_give_no_value() {
-    let (cfg, reference) = (BuildConfig::standard(), converged());
+    let (cfg, reference) = (BuildConfig::standard(), BuildConfig::converged());
     let tables = MasterTables::standard();
     for (x, y, k) in SECOND_KIND {
         let law = CrackLaw::new(k).unwrap();
@@ -78,7 +68,7 @@ fn in_the_second_kind_the_default_search_strays_and_the_tables_give_no_value() {
 fn in_the_first_kind_next_to_the_kink_the_default_search_is_within_its_accuracy() {
     let (x, y, k) = FIRST_KIND;
     let law = CrackLaw::new(k).unwrap();
-    let (f, f_on) = both(node(&converged(), &law, x, y));
+    let (f, f_on) = both(node(&BuildConfig::converged(), &law, x, y));
     assert!(
         f_on < f * (1.0 - 1e-4),
         "the first kind: F {f}, F_on {f_on}"

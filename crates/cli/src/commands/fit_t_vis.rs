@@ -38,9 +38,10 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
     let law = args.k.crack_law()?;
     let fit = thresholds::fit_t_vis(&setup.contact, &law, args.v_stick, args.v_stick_err, &opts)?;
     // without an uncertainty the title gives the value alone
-    let err = match args.v_stick_err {
-        e if e > 0.0 => format!(" ± {}", number(e)),
-        _ => String::new(),
+    let err = if args.v_stick_err > 0.0 {
+        format!(" ± {}", number(args.v_stick_err))
+    } else {
+        String::new()
     };
     let mut r = Report::new(format!(
         "Relaxation time for V_stick = {}{err} m/s, {}, k = {}",

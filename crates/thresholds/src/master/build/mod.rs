@@ -168,6 +168,29 @@ impl BuildConfig {
         }
     }
 
+    /// A converged search, against which the nodes and the default search are measured where
+    /// they are least accurate (the second kind of bouncing, `docs/performance.md`, "Master
+    /// tables", (15)): the standard settings with brackets of 1e-10 and BDF collisions at rtol
+    /// 1e-12 (absolute 1e-15), a hundredth of a node's each. BDF at rtol 1e-13 moved its F by at
+    /// most 9e-7 there; the default search and the nodes by up to 5.4e-5 and 8.2e-6. A few
+    /// times a node's cost.
+    ///
+    /// # Example
+    /// ```
+    /// use thresholds::master::build::BuildConfig;
+    /// use thresholds::Method;
+    /// let c = BuildConfig::converged();
+    /// assert_eq!((c.rel_tol, c.solver.rtol, c.solver.method), (1e-10, 1e-12, Method::Bdf));
+    /// ```
+    pub fn converged() -> Self {
+        let mut cfg = Self::standard();
+        cfg.rel_tol = 1e-10;
+        cfg.solver.method = crate::Method::Bdf;
+        cfg.solver.rtol = 1e-12;
+        cfg.solver.atol = 1e-15;
+        cfg
+    }
+
     /// The k of the tables.
     pub fn table_ks(&self) -> Vec<f64> {
         let (k0, per, n) = self.table_k;
