@@ -196,6 +196,8 @@ pub struct Setup {
     pub contact: Contact,
     /// Inputs as used: material, constants, radius, radius2, wall, then the command's own.
     pub input: Map<String, Value>,
+    /// Cautions about the inputs beyond the contact's own (a size law of the other ice).
+    pub cautions: Vec<String>,
 }
 
 impl Setup {
@@ -222,12 +224,19 @@ impl Setup {
             material: named,
             contact,
             input,
+            cautions: Vec::new(),
         })
     }
 
     /// Records one more input as used.
     pub fn with_input(&mut self, key: &str, value: impl Into<Value>) {
         self.input.insert(key.into(), value.into());
+    }
+
+    /// The contact's warnings, then the cautions about the other inputs: what a report warns of.
+    pub fn warnings(&self) -> Vec<String> {
+        let contact = self.contact.warnings().into_iter().map(|w| w.to_string());
+        contact.chain(self.cautions.iter().cloned()).collect()
     }
 
     /// `two identical spheres of 60 um of co2`, for titles.
@@ -279,7 +288,7 @@ pub struct TVisArgs {
     #[arg(long, allow_hyphen_values = true, conflicts_with = "t_vis_law")]
     pub t_vis: Option<f64>,
     /// T_vis from the size law of Section 5.3 at R1 = --radius: co2 = 1e-11 s (R1/1 um)^1.11,
-    /// h2o = 1e-10 s (R1/1.5 um)^1.11.
+    /// h2o = 1e-10 s (R1/1.5 um)^1.11 (a law with the other ice's material is warned of).
     #[arg(long, value_enum, ignore_case = true)]
     pub t_vis_law: Option<LawName>,
 }
@@ -293,6 +302,9 @@ impl TVisArgs {
             (None, Some(law)) => {
                 let law = TVisLaw::from(law);
                 setup.with_input("t_vis_law", law.name());
+                setup
+                    .cautions
+                    .extend(law.mismatch(setup.contact.material()));
                 law.t_vis(setup.contact.r1())
             }
             (None, None) => default.ok_or_else(|| {

@@ -166,6 +166,32 @@ fn a_search_limit_below_the_jkr_threshold_is_warned_of() {
     assert_eq!(j["warnings"].as_array().map(Vec::len), Some(0));
 }
 
+/// The size laws of Section 5.3 belong to their ices: CO2's constants with H2O's law (or the
+/// reverse) are warned of, naming the law that was probably meant; each ice with its own law,
+/// and a T_vis given outright, are not.
+#[test]
+fn a_size_law_of_the_other_ice_is_warned_of() {
+    let j = json_of("v-stick --material co2 --t-vis-law h2o --json");
+    let w = j["warnings"].as_array().unwrap();
+    assert_eq!(w.len(), 1);
+    let w = w[0].as_str().unwrap();
+    assert!(
+        w.starts_with("t_vis_law = 'h2o'") && w.ends_with("t_vis_law = 'co2' was probably meant")
+    );
+    let j = json_of("v-frag --material h2o --radius 1e-7 --t-vis-law co2 --json");
+    assert_eq!(j["warnings"].as_array().map(Vec::len), Some(1));
+    for ok in [
+        "v-stick --material co2 --t-vis-law co2 --json",
+        "collide --material h2o --t-vis-law h2o --v-in 1 --json",
+    ] {
+        assert_eq!(
+            json_of(ok)["warnings"].as_array().map(Vec::len),
+            Some(0),
+            "{ok}"
+        );
+    }
+}
+
 /// `--method` (default `table`): the master table answers within 1e-5 of the exact search
 /// (Section 4.4's CO2 case), the JSON echoes the choice in "input" and says in "method" which
 /// path answered; beyond the no-bouncing cliff (T_vis = 1e-6 s) the table says "no bouncing"

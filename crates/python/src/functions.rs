@@ -170,3 +170,10 @@ pub fn t_vis_law<'py>(
     })?;
     Ok(PyArray1::from_vec(py, t))
 }
+
+/// The caution of `TVisLaw::mismatch`: `law` (`co2` or `h2o`) with the constants of the other
+/// ice; `None` for the law's own ice, any other material or an unknown law (refused elsewhere).
+#[pyfunction]
+pub fn t_vis_law_mismatch(law: &str, material: &crate::material::Material) -> Option<String> {
+    TVisLaw::from_name(law)?.mismatch(&material.inner())
+}

@@ -34,7 +34,9 @@ mod _core {
     #[pymodule_export]
     use crate::error::{_InputError, SolverError};
     #[pymodule_export]
-    use crate::functions::{collide, crack_speed, dimensionless, jkr, t_vis_law};
+    use crate::functions::{
+        collide, crack_speed, dimensionless, jkr, t_vis_law, t_vis_law_mismatch,
+    };
     #[pymodule_export]
     use crate::material::Material;
     #[pymodule_export]

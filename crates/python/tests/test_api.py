@@ -182,6 +182,27 @@ def test_a_search_limit_below_the_jkr_threshold_is_warned_of():
         st.v_stick(CO2, 60e-6, 1e-9, v_max=2 * jkr)
 
 
+def test_a_size_law_of_the_other_ice_is_warned_of():
+    """The size laws of Section 5.3 belong to their ices: CO2's constants with H2O's law (or the
+    reverse) are warned of at the caller's line, naming the law probably meant; each ice with
+    its own law, another material, and T_vis given outright are not."""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        st.v_frag(CO2, 1e-7, t_vis_law="h2o")
+    assert [w.filename for w in caught] == [__file__]
+    assert "t_vis_law = 'co2' was probably meant" in str(caught[0].message)
+    with pytest.warns(st.StickinessWarning, match=r"t_vis_law = 'co2' \(the size law of CO2 ice"):
+        st.v_stick("h2o", 1e-6, t_vis_law="co2")
+    with pytest.warns(st.StickinessWarning, match="constants of H2O ice"):
+        st.collide(st.Material.h2o(), 1e-6, t_vis_law="co2", v_in=1.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        st.v_stick(CO2, 1e-6, t_vis_law="co2")
+        st.v_stick("h2o", 1e-6, t_vis_law="h2o")
+        st.v_stick(CO2.replace(density=1000.0), 1e-6, t_vis_law="h2o")  # a material of one's own
+        st.v_stick(CO2, 1e-6, st.t_vis_law("h2o", 1e-6))
+
+
 def test_material_value_semantics(tmp_path):
     assert st.Material.co2() == CO2 and st.Material.h2o() != CO2
     assert hash(st.Material.co2()) == hash(CO2)

@@ -2,7 +2,7 @@
 
 use crate::stick::{sticking_thresholds, SearchOptions};
 use crate::ThresholdsError;
-use contact::Contact;
+use contact::{Contact, Material};
 use greenwood::CrackLaw;
 
 /// `V_frag = 10 V_stick` (Section 6, Eq. vfrag; from C ~ 15 and E_break ~ 1.54 F_crit delta_crit).
@@ -120,5 +120,42 @@ impl TVisLaw {
     pub fn t_vis(&self, r1: f64) -> f64 {
         let (t_ref, r_ref) = self.reference();
         t_ref * (r1 / r_ref).powf(T_VIS_EXPONENT)
+    }
+
+    /// The ice whose relaxation times the law was fitted to, with the constants of Section 3.
+    pub fn ice(&self) -> Material {
+        match self {
+            Self::Co2 => Material::co2(),
+            Self::H2o => Material::h2o(),
+        }
+    }
+
+    /// A caution when `material` holds the constants of the other ice of Section 3: the size
+    /// law of one ice applied to grains of the other, most often a slip (`co2` grains with
+    /// `t_vis_law = h2o`). `None` for the law's own ice and for any other material, whose
+    /// T_vis the user is free to take from either law. The CLI and Python show it as a warning.
+    ///
+    /// # Example
+    /// ```
+    /// use thresholds::{Material, TVisLaw};
+    /// assert!(TVisLaw::H2o.mismatch(&Material::co2()).unwrap().contains("t_vis_law = 'h2o'"));
+    /// assert_eq!(TVisLaw::Co2.mismatch(&Material::co2()), None);
+    /// assert_eq!(TVisLaw::Co2.mismatch(&Material { density: 1000.0, ..Material::h2o() }), None);
+    /// ```
+    pub fn mismatch(&self, material: &Material) -> Option<String> {
+        let other = match self {
+            Self::Co2 => Self::H2o,
+            Self::H2o => Self::Co2,
+        };
+        (*material == other.ice()).then(|| {
+            format!(
+                "t_vis_law = '{}' (the size law of {} ice, Section 5.3) is used with the constants \
+                 of {} ice: t_vis_law = '{}' was probably meant",
+                self.name(),
+                self.name().to_uppercase(),
+                other.name().to_uppercase(),
+                other.name()
+            )
+        })
     }
 }

@@ -91,7 +91,7 @@ pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
         number(args.v_in),
         number(law.k())
     ));
-    r.warn(setup.contact.warnings());
+    r.warn(setup.warnings());
     r.warn(Warning::for_speed("v_in", args.v_in));
     r.text("outcome", c.outcome.as_str());
     r.number("e", c.e, "")?;

@@ -49,7 +49,7 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
         setup.describe(),
         number(args.k.k)
     ));
-    r.warn(setup.contact.warnings());
+    r.warn(setup.warnings());
     r.warn(fit.warnings().iter().map(|w| w.message_for("--v-max ")));
     r.number("t_vis", fit.t_vis, "s")?;
     r.number("t_vis_min", fit.t_vis_min, "s")?;

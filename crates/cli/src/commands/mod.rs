@@ -44,6 +44,6 @@ pub fn point_report(what: String, setup: &Setup, t_vis: f64, k: f64) -> Report {
         number(t_vis),
         number(k)
     ));
-    r.warn(setup.contact.warnings());
+    r.warn(setup.warnings());
     r
 }

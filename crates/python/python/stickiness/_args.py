@@ -210,12 +210,19 @@ def law_name(name: str, value: Any, required: bool = False) -> Optional[str]:
     return choice(name, value, ("co2", "h2o"))
 
 
-def t_vis(value: Any, law: Optional[str], radius: Any, default: Optional[float]) -> Any:
-    """T_vis as given, from the size law ``law`` at ``radius``, or ``default`` (None: required)."""
+def t_vis(
+    value: Any, law: Optional[str], radius: Any, default: Optional[float], of: Any = None
+) -> Any:
+    """T_vis as given, from the size law ``law`` at ``radius``, or ``default`` (None: required).
+    A law of one ice with the material ``of`` holding the other ice's constants is warned of
+    (``StickinessWarning``, at the public function's caller)."""
     law = law_name("t_vis_law", law)
     if law is not None:
         if value is not None:
             raise ValueError("give t_vis or t_vis_law, not both")
+        caution = None if of is None else _core.t_vis_law_mismatch(law, material(of))
+        if caution is not None:
+            warnings.warn(caution, StickinessWarning, stacklevel=3)
         b = Broadcast(radius=radius)
         return b.out(b.call(_core.t_vis_law, law, b.flat["radius"]))
     if value is None:

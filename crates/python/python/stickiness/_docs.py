@@ -33,7 +33,9 @@ PARAMETERS: Dict[str, str] = {
         of Musiolik et al. (2016a). Excludes ``radius2``. Default False.""",
     "t_vis_law": """t_vis_law : {'co2', 'h2o'}, optional
         Take T_vis from the size law of Section 5.3 at ``radius``: T_vis,CO2 = 1e-11 s
-        (R1/1 um)^1.11, T_vis,H2O = 1e-10 s (R1/1.5 um)^1.11. Excludes ``t_vis``.""",
+        (R1/1 um)^1.11, T_vis,H2O = 1e-10 s (R1/1.5 um)^1.11. Excludes ``t_vis``. A law
+        with the other ice's constants (``"co2"`` grains, ``t_vis_law="h2o"``) is warned of
+        (``StickinessWarning``).""",
     "v_max": """v_max : float or Quantity, optional
         Highest impact speed searched for bouncing (m/s, at most 1e4). Default 1000
         V_stick,JKR.""",

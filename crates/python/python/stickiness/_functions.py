@@ -92,7 +92,7 @@ def collide(
     core_method = "table" if table else "search"
     if v_in is None:
         raise TypeError("collide() missing required argument: 'v_in' (m/s)")
-    t = _args.t_vis(t_vis, t_vis_law, radius, None)
+    t = _args.t_vis(t_vis, t_vis_law, radius, None, material)
     t_end = _args.scalar_option("t_end", t_end)
     if t_end is not None and not (math.isfinite(t_end) and t_end >= 0):
         raise ValueError(f"t_end = {_args.shown(t_end)}: must be >= 0 and finite (s)")
@@ -198,7 +198,7 @@ def v_stick(
     >>> r.method, round(r.v_stick, 5)
     ('table', 0.04138)
     """
-    t = _args.t_vis(t_vis, t_vis_law, radius, None)
+    t = _args.t_vis(t_vis, t_vis_law, radius, None, material)
     b, d = _thresholds(_core.v_stick, material, radius, t, k, radius2, wall, v_max, rel_tol, method)
     return VStick(
         v_stick=b.out(d["v_stick"]),
@@ -262,7 +262,7 @@ def v_frag(
     >>> round(st.v_frag("co2", 30e-6).v_frag, 3)  # Section 7.1: V_frag,JKR = 0.296 m/s
     0.296
     """
-    t = _args.t_vis(t_vis, t_vis_law, radius, 0.0)
+    t = _args.t_vis(t_vis, t_vis_law, radius, 0.0, material)
     b, d = _thresholds(_core.v_frag, material, radius, t, k, radius2, wall, v_max, rel_tol, method)
     fields = [f for f in VFrag.__dataclass_fields__ if f != "method"]
     return VFrag(**{f: b.out(d[f]) for f in fields}, method=b.methods(d["method"]))
