@@ -348,6 +348,10 @@ impl PointArgs {
 /// `--t-vis` of `collide`: a collision has no JKR limit to answer at T_vis = 0.
 pub const COLLIDE_T_VIS_HELP: &str = "Viscoelastic relaxation time T_vis (s, > 0)";
 
+/// `--t-vis` of `v-frag`, whose default is the JKR limit.
+pub const V_FRAG_T_VIS_HELP: &str =
+    "Viscoelastic relaxation time T_vis (s, >= 0; default 0, the JKR limit: V_frag,JKR)";
+
 /// `--radius` of `v-frag`: the aggregates' monomers (Section 6).
 pub const V_FRAG_RADIUS_HELP: &str = "Radius of the aggregates' monomers (m, > 0): R1 of the two \
      identical spheres whose V_stick sets V_frag (with --radius2 or --wall, R1 of that pair)";

@@ -59,7 +59,10 @@ enum Command {
     /// two monomers (Section 6: identical spheres of radius --radius); with --radius2 or --wall
     /// it is 10 V_stick of that pair instead, an extrapolation of the factor 10 that Wada et
     /// al. (2013) found for aggregates of identical monomers.
-    #[command(mut_arg("radius", |a| a.help(args::V_FRAG_RADIUS_HELP)))]
+    #[command(
+        mut_arg("radius", |a| a.help(args::V_FRAG_RADIUS_HELP)),
+        mut_arg("t_vis", |a| a.help(args::V_FRAG_T_VIS_HELP))
+    )]
     VFrag(commands::v_frag::VFragArgs),
     /// V_stick, V_double_onset, V_stick,JKR and V_frag over a grid, into a file that survives
     /// being killed.

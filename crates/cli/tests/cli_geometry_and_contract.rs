@@ -268,7 +268,7 @@ fn unwritable_trajectory_is_bad_input() {
 }
 
 /// Text and JSON print the same digits (shortest round-trip), with no trailing spaces, and
-/// `no bouncing up to X m/s` where V_stick does not exist.
+/// `no bouncing up to X m/s` where V_stick does not exist (`v_frag`: `above 10 X m/s`).
 #[test]
 fn one_number_format() {
     let args = ["v-stick", "--t-vis", "1e-6", "--v-max", "2"];
@@ -278,6 +278,12 @@ fn one_number_format() {
         "{text}"
     );
     assert!(text.lines().all(|l| !l.ends_with(' ')), "{text:?}");
+    // V_frag = 10 V_stick (Section 6): without bouncing up to v_max, above 10 v_max
+    let (_, text, _) = run(&["v-frag", "--t-vis", "1e-6", "--v-max", "2"]);
+    assert!(
+        text.contains("v_frag      = above 20.0 m/s (no bouncing up to 2.0 m/s)"),
+        "{text}"
+    );
     let (_, text, _) = run(&["jkr"]);
     let j = json_of("jkr --json");
     for key in ["a_eq", "tabor", "f_crit", "v_stick_jkr"] {

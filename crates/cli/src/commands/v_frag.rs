@@ -5,6 +5,7 @@ use crate::args::{PointArgs, SearchArgs};
 use crate::error::CliError;
 use crate::output::Report;
 use clap::Args;
+use numerics::format::number;
 
 /// V_frag = 10 V_stick for aggregates of monomers of radius R1 (Arakawa & Krijt 2021, Section 6).
 #[derive(Debug, Args)]
@@ -30,7 +31,17 @@ pub fn run(args: &VFragArgs) -> Result<Report, CliError> {
     );
     let mut r = point_report(what, &setup, t_vis, law.k());
     r.warn(opts.v_max_warning(f.v_stick_jkr, "--v-max "));
-    v_stick_rows(&mut r, "v_frag", f.v_frag, v_max)?;
+    // without bouncing up to v_max, V_frag = 10 V_stick lies above 10 v_max
+    r.optional(
+        "v_frag",
+        f.v_frag,
+        "m/s",
+        format!(
+            "above {} m/s (no bouncing up to {} m/s)",
+            number(thresholds::v_frag(v_max)),
+            number(v_max)
+        ),
+    )?;
     v_stick_rows(&mut r, "v_stick", f.v_stick, v_max)?;
     r.number("t_vis", t_vis, "s")?;
     r.number("v_frag_jkr", f.v_frag_jkr, "m/s")?;
