@@ -63,7 +63,8 @@ RUNS = {"constant": None, "q16": 0.16, "median": 0.5, "q84": 0.84}
 #: sat in the grid's top decade at 1e4 yr; with 1e15 g (500 m) none (floor values only), but the
 #: boulders at 2.5 au reached 1e15 g at 2.2e4 yr and 46 % of that cell's dust sat in the last
 #: bin at 7e4 yr. Their mean radius grows by about 10 m every 1000 yr (107 m at 2e4 yr, 132 m
-#: at 2.25e4 yr), so about 1 km (5e15 g) at 1e5 yr, with a tail two decades above the mean:
+#: at 2.25e4 yr), so about 1 km (5e15 g) at 1e5 yr, with a tail two decades above the mean
+#: (so forecast; the runs put most mass at 3 km and the largest bodies at 6.5 km at 1e5 yr):
 #: 1e20 g (24 km) leaves the tail two decades of room. Each decade costs 7 bins, and a step
 #: costs about bins^3 (DustPy's sparse LU): 1.5 times as much with 1e20 g as with 1e15 g
 #: (0.96 against 0.63 s a step at 2e4 yr, measured one after the other).
