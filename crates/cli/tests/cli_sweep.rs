@@ -346,6 +346,40 @@ fn progress_lines_when_not_a_terminal() {
     assert!(err.contains("sweep: 12/12 rows (100.0 %)"), "{err}");
 }
 
+/// A row's warning (a radius of 60 m, most often meant in um) is summed up on stderr and in
+/// the JSON summary, not only left in the file's warnings column; a grid of plausible grains
+/// gives none.
+#[test]
+fn rows_with_warnings_are_summed_up() {
+    let d = dir("warned");
+    let out = d.join("w.csv");
+    let (code, stdout, err) = sweep(&["--t-vis", "1e-9", "--radius", "60e-6,60", "--json"], &out);
+    assert_eq!(code, 0, "{err}");
+    let w = serde_json::from_str::<serde_json::Value>(&stdout).unwrap()["warnings"]
+        .as_array()
+        .unwrap()
+        .clone();
+    assert_eq!(w.len(), 1, "{stdout}");
+    let w = w[0].as_str().unwrap();
+    assert!(
+        w.starts_with("rows computed with warnings: 1 of 2")
+            && w.contains("row 1: radius = 60.0 m"),
+        "{w}"
+    );
+    assert!(
+        err.contains("warning: rows computed with warnings"),
+        "{err}"
+    );
+    let (code, stdout, _) = sweep(&["--t-vis", "1e-9", "--json", "--force"], &out);
+    assert_eq!(code, 0);
+    assert_eq!(
+        serde_json::from_str::<serde_json::Value>(&stdout).unwrap()["warnings"]
+            .as_array()
+            .map(Vec::len),
+        Some(0)
+    );
+}
+
 /// `sweep --method table` fills the method column with the path that answered each row.
 #[test]
 fn method_column() {

@@ -93,3 +93,21 @@ def test_pickles_and_bad_axes():
     # a scheduler's address is no client
     with pytest.raises(TypeError, match="client: expected a dask.distributed.Client"):
         st.sweep(t_vis=1e-9, client="tcp://127.0.0.1:8786")
+
+
+def test_rows_with_warnings_are_summed_up():
+    """A row's warning (a radius of 60 m, most often meant in um) is raised once as a
+    StickinessWarning at the caller's line, with the count and the first row's text, not only
+    left in the ``warnings`` column; plausible grains give none."""
+    import warnings
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        df = st.sweep("co2", [60e-6, 60.0], 1e-9)
+    assert [w.filename for w in caught] == [__file__]
+    text = str(caught[0].message)
+    assert text.startswith("rows with warnings: 1 of 2") and "row 1: radius = 60.0 m" in text
+    assert list(df["warnings"] != "") == [False, True]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        st.sweep("co2", 60e-6, [1e-10, 1e-9])

@@ -14,12 +14,14 @@ costs a recomputed chunk, never a row, and the result equals the in-process one.
 from __future__ import annotations
 
 import sys
+import warnings
 from dataclasses import dataclass
 from typing import Any, Dict, Iterable, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
 from . import _args, _core
+from ._args import StickinessWarning
 from ._core import Material
 from ._docs import shared
 
@@ -119,6 +121,22 @@ def _frame(parts: Iterable[Dict[str, Any]]) -> Any:
     df = pd.DataFrame(columns).sort_values("index", kind="stable")
     df["warnings"] = df["warnings"].astype(str)
     return df.drop(columns="index").reset_index(drop=True)
+
+
+def _warned(df: Any) -> Any:
+    """``df``, after one ``StickinessWarning`` (at the caller of :func:`sweep`) if any of its
+    rows carries warnings: how many, and the first row's, so that a slip of units (a radius of
+    60 m) is not left to be found in the ``warnings`` column."""
+    warned = (df["warnings"] != "").to_numpy()
+    if warned.any():
+        first = int(np.argmax(warned))
+        warnings.warn(
+            f"rows with warnings: {int(warned.sum())} of {len(df)} (the 'warnings' column); "
+            f"the first, row {first}: {df['warnings'].iloc[first]}",
+            StickinessWarning,
+            stacklevel=3,
+        )
+    return df
 
 
 def _batches(n: int, size: int) -> List[List[int]]:
@@ -235,7 +253,7 @@ def sweep(
                 print(f"\rsweep: {done}/{spec.n_chunks} chunks", end="", file=sys.stderr)
         if progress:
             print(file=sys.stderr)
-        return _frame(parts)
+        return _warned(_frame(parts))
     futures = client.map(
         compute_chunks,
         [spec] * len(batches),
@@ -247,4 +265,4 @@ def sweep(
         from distributed import progress as dask_progress  # type: ignore[import-untyped,unused-ignore]
 
         dask_progress(futures)
-    return _frame(client.gather(futures))
+    return _warned(_frame(client.gather(futures)))

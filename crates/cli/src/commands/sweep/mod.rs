@@ -180,6 +180,8 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
     let (tx, rx) = mpsc::channel::<Result<Row, ThresholdsError>>();
     let next = AtomicUsize::new(0);
     let stop = AtomicBool::new(false);
+    // rows computed with warnings: how many, and the first (its grid index and warnings)
+    let mut warned: (usize, Option<(usize, String)>) = (0, None);
     let outcome = std::thread::scope(|scope| -> Result<(), CliError> {
         // workers: each takes the next chunk left and sends its rows as they are found
         scope.spawn(|| {
@@ -215,6 +217,12 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
             let row = received.inspect_err(|_| stop.store(true, Ordering::Relaxed))?;
             pending.insert(row.point.index, row);
             while let Some(row) = pending.remove(&next_row) {
+                if !row.warnings.is_empty() {
+                    warned.0 += 1;
+                    warned
+                        .1
+                        .get_or_insert_with(|| (row.point.index, row.warnings.join("; ")));
+                }
                 file.write_all(row_text(format, &grid, &row).as_bytes())
                     .map_err(|e| {
                         stop.store(true, Ordering::Relaxed);
@@ -234,5 +242,13 @@ pub fn run(args: &SweepArgs) -> Result<Report, CliError> {
     r.count("computed", total - done);
     r.count("resumed", done);
     r.text("out", &path.display().to_string());
+    // a slip of units (a radius of 60 m) is not left to be found in the file's column
+    if let (n, Some((index, first))) = warned {
+        r.warn([format!(
+            "rows computed with warnings: {n} of {} (the file's warnings column); the first, \
+             row {index}: {first}",
+            total - done
+        )]);
+    }
     Ok(r)
 }
