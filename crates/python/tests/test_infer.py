@@ -421,3 +421,20 @@ def test_every_combination_of_data_runs(kinds, sizes):
     assert list(post.samples.columns) == list(free)
     t = post.samples["t_vis"].to_numpy()
     assert np.all(np.isfinite(t)) and np.all(t > 0)
+
+
+def test_a_radius_in_the_wrong_unit_is_warned_of():
+    """A radius of 60 m (most often meant in um), given alone or as a SizeDistribution, is
+    warned of at the caller's line before the chain runs, as every function warns of it; the
+    paper's grains are not."""
+    kw = dict(wall=True, v_stick=(0.04, 0.02), walkers=8, steps=20, progress=False)
+    for radius in (60.0, st.SizeDistribution.lognormal(median=60.0, width=0.4)):
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            st.infer(CO2, radius, **kw)
+        plausible = [w for w in caught if "plausible range" in str(w.message)]
+        assert len(plausible) == 1 and plausible[0].filename == __file__
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        st.infer(CO2, 60e-6, **kw)
+    assert not [w for w in caught if "plausible range" in str(w.message)]

@@ -320,6 +320,12 @@ def infer(
     radius2 = _args.scalar_option("radius2", _args.si("radius2", radius2))
     if radius2 is not None and not (math.isfinite(radius2) and radius2 > 0):
         raise ValueError(f"radius2 = {_args.shown(radius2)}: must be > 0 and finite (m)")
+    # the contact's warnings (a radius of 60 m, most often meant in um; a Tabor parameter below
+    # 1) at the caller's line, as every function gives them, before the chain hides them
+    one = sizes.radii.size == 1
+    b = _args.Broadcast(radius=float(sizes.radii[0]) if one else sizes.radii, radius2=radius2)
+    found = b.call(_core.jkr, material, b.flat["radius"], b.flat.get("radius2"), wall)
+    b.warn(found["warnings"], stacklevel=3)
     k = _args.scalar("k", k)
     method = _args.method(method)
     rel_tol = _args.scalar("rel_tol", rel_tol)
