@@ -32,6 +32,7 @@ __all__ = [
     "parallel_batch",
     "sweep",
     "t_vis_law",
+    "t_vis_law_mismatch",
     "v_frag",
     "v_stick",
 ]
