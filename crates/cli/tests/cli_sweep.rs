@@ -370,6 +370,16 @@ fn rows_with_warnings_are_summed_up() {
         err.contains("warning: rows computed with warnings"),
         "{err}"
     );
+    // a size law of the other ice is a row's warning too (TVisLaw::mismatch)
+    let (code, _, err) = sweep(
+        &["--material", "co2,h2o", "--t-vis-law", "h2o", "--force"],
+        &out,
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        err.contains("1 of 2") && err.contains("row 0: t_vis_law = 'h2o'"),
+        "{err}"
+    );
     let (code, stdout, _) = sweep(&["--t-vis", "1e-9", "--json", "--force"], &out);
     assert_eq!(code, 0);
     assert_eq!(

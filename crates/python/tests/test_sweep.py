@@ -108,6 +108,8 @@ def test_rows_with_warnings_are_summed_up():
     text = str(caught[0].message)
     assert text.startswith("rows with warnings: 1 of 2") and "row 1: radius = 60.0 m" in text
     assert list(df["warnings"] != "") == [False, True]
+    with pytest.warns(st.StickinessWarning, match=r"1 of 2 .* row 0: t_vis_law = 'h2o'"):
+        st.sweep(["co2", "h2o"], 1e-6, t_vis_law="h2o")
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         st.sweep("co2", 60e-6, [1e-10, 1e-9])

@@ -78,6 +78,9 @@ pub struct Point {
 pub struct Chunk {
     /// The points, in increasing order of the T_vis axis.
     pub points: Vec<Point>,
+    /// A warning for each of its rows beyond the contact's own: T_vis from the size law of the
+    /// other ice ([`TVisLaw::mismatch`]).
+    pub caution: Option<String>,
 }
 
 /// The most points a grid may have: 1e9 (a CSV row is about 150 bytes, so 150 GB of output,
@@ -255,9 +258,11 @@ impl Grid {
                             Partner::Wall => Geometry::wall(r1),
                         };
                         for (ki, &k) in self.k.iter().enumerate() {
-                            let t_values = match &self.t_vis {
-                                TVisAxis::Values(t) => t.clone(),
-                                TVisAxis::Law(law) => vec![law.t_vis(r1)],
+                            let (t_values, caution) = match &self.t_vis {
+                                TVisAxis::Values(t) => (t.clone(), None),
+                                TVisAxis::Law(law) => {
+                                    (vec![law.t_vis(r1)], law.mismatch(&constants))
+                                }
                             };
                             let points = t_values
                                 .into_iter()
@@ -271,7 +276,7 @@ impl Grid {
                                     k,
                                 })
                                 .collect();
-                            out.push(Chunk { points });
+                            out.push(Chunk { points, caution });
                         }
                     }
                 }
@@ -355,7 +360,12 @@ impl Chunk {
                 v_stick_jkr: th.v_stick_jkr,
                 v_frag: th.v_stick.map(v_frag),
                 no_bouncing_below: th.no_bouncing_below(),
-                warnings: contact.warnings().iter().map(|w| w.to_string()).collect(),
+                warnings: contact
+                    .warnings()
+                    .iter()
+                    .map(|w| w.to_string())
+                    .chain(self.caution.clone())
+                    .collect(),
                 method: th.method,
             };
             chain.push(p.t_vis, th.as_hint());
