@@ -24,6 +24,27 @@ pub fn number(x: f64) -> String {
     }
 }
 
+/// Significant figures a derived value is rounded to before [`number`] prints it in a message.
+const DERIVED_DIGITS: usize = 12;
+
+/// `x`, a value computed from the inputs (a difference, a scaled length), in the form of
+/// [`number`] after rounding to 12 significant figures, so that the arithmetic itself adds no
+/// digits (0.04 - 0.03 = 0.010000000000000002 reads 0.01). For messages and titles only: the
+/// JSON keeps every digit.
+///
+/// ```
+/// use numerics::format::derived;
+/// assert_eq!(derived(0.04 - 0.03), "0.01");
+/// assert_eq!(derived(60e-6 / 1e-6), "60.0");
+/// assert_eq!(derived(f64::NAN), "nan");
+/// ```
+pub fn derived(x: f64) -> String {
+    let rounded = format!("{x:.prec$e}", prec = DERIVED_DIGITS - 1)
+        .parse()
+        .unwrap_or(x);
+    number(rounded)
+}
+
 /// Plain decimals longer than this many characters in another library's message are written
 /// again by [`shorten_numbers`]: `0.000123` stays, twenty zeros before the digits do not.
 const LONG_NUMBER: usize = 20;
@@ -64,8 +85,8 @@ pub fn shorten_numbers(text: &str) -> String {
 
 /// A length (m) in the unit that suits it (nm, um, mm, cm, m), for titles: `60 um`, `10 nm`.
 ///
-/// The scaled value is rounded to 12 significant figures before [`number`] prints it, so that
-/// the conversion itself (60e-6 / 1e-6 = 60.00000000000001) adds no digits.
+/// The scaled value is printed by [`derived`], so that the conversion itself (60e-6 / 1e-6 =
+/// 60.00000000000001) adds no digits.
 ///
 /// ```
 /// use numerics::format::length;
@@ -90,10 +111,7 @@ pub fn length(metres: f64) -> String {
         .copied()
         .find(|(s, _)| metres >= *s)
         .unwrap_or(UNITS[UNITS.len() - 1]);
-    let scaled: f64 = format!("{:.11e}", metres / scale)
-        .parse()
-        .unwrap_or(metres / scale);
-    let text = number(scaled);
+    let text = derived(metres / scale);
     let text = text.strip_suffix(".0").unwrap_or(&text);
     format!("{text} {unit}")
 }

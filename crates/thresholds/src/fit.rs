@@ -113,7 +113,7 @@ impl FitWarning {
             ),
             FitWarning::LowerEndAtJkr { low, v_stick_jkr } => format!(
                 "V_stick - dV = {} m/s is at or below V_stick,JKR = {} m/s: t_vis_min = 0 (the JKR limit; no T_vis > 0 gives a V_stick that low)",
-                number(*low),
+                numerics::format::derived(*low),
                 number(*v_stick_jkr)
             ),
         }
