@@ -30,5 +30,6 @@ ax.set(xscale="log", yscale="log", xlabel="relaxation time T_vis (s)",
        ylabel="threshold velocity for sticking V_stick (m/s)", title="Figure 4: CO2, R1 = 60 um")
 ax.legend()
 out = sys.argv[1] if len(sys.argv) > 1 else "figure4.png"
+fig.tight_layout()
 fig.savefig(out, dpi=120)
 print(f"wrote {out}")

@@ -16,4 +16,4 @@ else:
     post = st.infer("co2", sizes, wall=True, v_stick=(0.04, 0.02), walkers=32, steps=1000, seed=1)
     data = "a threshold, on a wall"
 dt = time.perf_counter() - t0
-print(f"32 walkers x 1000 steps over {len(sizes)} radii, {data}: {dt:.1f} s (with the imports); {post}")
+print(f"32 walkers x 1000 steps over {len(sizes)} radii, {data}: {dt:.1f} s (with infer's lazy import of pandas); {post}")

@@ -24,6 +24,7 @@ print(f"V_stick on a wall = {w.v_stick * 100:.4f} cm/s")
 # arrays broadcast like numpy: V_stick over relaxation times, all cores
 t_vis = np.geomspace(1e-12, 1e-8, 9)
 print("T_vis (s):  ", np.array2string(t_vis, precision=1))
+# (radius left out: the default, 60 um)
 print("V_stick (m/s):", np.array2string(st.v_stick(co2, t_vis=t_vis).v_stick, precision=4))
 
 # the relaxation time for a measured V_stick of 0.04 +- 0.02 m/s (Section 5.1)

@@ -17,6 +17,7 @@ import stickiness as st
 warnings.simplefilter("ignore", st.StickinessWarning)
 rng = np.random.default_rng(2030)
 n_materials, per_material = 20, 5000
+print("drawing the 1e5 collisions (V_stick of each material and size first: 10-30 s)...")
 
 
 def log_uniform(lo, hi, size=None):
