@@ -1,5 +1,6 @@
 """A V_stick sweep on a Dask cluster: a LocalCluster by default, or a running one.
 
+    pip install 'stickiness[sweep]'                           # dask.distributed and pandas
     python examples/python/dask_sweep.py                      # a LocalCluster of 2 processes
     python examples/python/dask_sweep.py --scheduler tcp://host:8786
     python examples/python/dask_sweep.py --out sweep.csv
@@ -41,7 +42,9 @@ def main() -> None:
         client.close()
         if cluster is not None:
             cluster.close()
-    print(df[["material", "radius", "t_vis", "v_stick", "v_frag"]].to_string(max_rows=12))
+    # SI units; NaN: no bouncing below the search limit (beyond the cliff), see no_bouncing_below
+    columns = ["material", "radius", "t_vis", "v_stick", "v_frag", "no_bouncing_below"]
+    print(df[columns].to_string(max_rows=12, float_format="{:.4g}".format))
     if args.out:
         df.to_csv(args.out, index=False)
         print(f"wrote {args.out}")

@@ -1,6 +1,7 @@
 """Figure 4 of Arakawa & Krijt (2021) with matplotlib: V_stick against T_vis for several k,
 CO2 grains of 60 um, with the experimental band of Musiolik et al. (2016a).
 
+    pip install stickiness matplotlib
     python examples/python/figure4.py [OUTPUT.png]
 """
 
