@@ -85,8 +85,9 @@ pub fn header_lines(command: &str, grid: &Grid) -> Vec<String> {
         "stickiness sweep: V_stick, V_double_onset, V_stick,JKR and V_frag = 10 V_stick over a grid (Arakawa & Krijt 2021)".to_string(),
         format!("command: {command}"),
         format!(
-            "grid: material, gamma_sv, radius, radius2, t_vis, k (outermost first), {} points; each T_vis seeded by its neighbour's thresholds",
-            grid.len()
+            "grid: material, gamma_sv, radius, radius2, t_vis, k (outermost first), {} {}; each T_vis seeded by its neighbour's thresholds",
+            grid.len(),
+            if grid.len() == 1 { "point" } else { "points" }
         ),
         format!("units: {UNITS}"),
         "an empty field has no value: v_stick, v_double_onset, v_frag without bouncing up to no_bouncing_below (else empty); radius2 on a wall".into(),
