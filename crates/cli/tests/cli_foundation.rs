@@ -187,7 +187,7 @@ fn collision_commands_state_the_collisions_range_of_k() {
 }
 
 /// A Poisson ratio of 0 is named as such by every collision command and by a sweep of any
-/// T_vis > 0 (the drag A = T_vis/nu^2 of Section 2.3 is infinite there), not blamed on T_vis;
+/// T_vis > 0 (the drag A = T_vis/nu^2 of Section 2.5 is infinite there), not blamed on T_vis;
 /// `jkr` takes it (no drag in JKR).
 #[test]
 fn collision_commands_name_a_poisson_ratio_of_zero() {

@@ -25,7 +25,7 @@ pub struct Material {
     /// (Relaxed) Young's modulus E (Pa).
     pub young: f64,
     /// Poisson ratio nu (dimensionless, -1 < nu < 0.5; a collision needs nu != 0, its drag being
-    /// A = T_vis/nu^2, Section 2.3).
+    /// A = T_vis/nu^2, Section 2.5).
     pub poisson: f64,
     /// Material density rho (kg/m^3).
     pub density: f64,

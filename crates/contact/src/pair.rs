@@ -6,8 +6,9 @@ use numerics::format::number;
 use numerics::{positive, OutOfRange};
 use std::f64::consts::PI;
 
-/// The JKR quantities of a contact as `(name, SI unit)`, in the order the CLI's `jkr` and
-/// Python's `jkr` report them; [`Contact::jkr_values`] gives their values.
+/// The JKR quantities of a contact as `(name, SI unit)` (an empty unit: dimensionless, the Tabor
+/// parameter), in the order the CLI's `jkr` and Python's `jkr` report them;
+/// [`Contact::jkr_values`] gives their values.
 pub const JKR_QUANTITIES: [(&str, &str); 8] = [
     ("a_eq", "m"),
     ("delta_eq", "m"),

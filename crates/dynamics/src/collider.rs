@@ -47,11 +47,11 @@ pub fn collision_k(k: f64) -> Result<f64, OutOfRange> {
 }
 
 /// What a collision needs of the Poisson ratio besides the material's -1 < nu < 0.5: the
-/// viscoelastic drag's A = T_vis/nu^2 (Section 2.3) is infinite at nu = 0, so the drag number
+/// viscoelastic drag's A = T_vis/nu^2 (Section 2.5) is infinite at nu = 0, so the drag number
 /// c_D is too (an elastic material of nu = 0 still has its JKR quantities); 1/nu^2 overflows
 /// below |nu| = 7.5e-155.
 const POISSON_FOR_DRAG: &str = "-1 < poisson < 0.5 and nonzero for a collision (the drag's \
-     A = T_vis/nu^2 of Section 2.3 is infinite at nu = 0; |nu| above about 1e-154)";
+     A = T_vis/nu^2 of Section 2.5 is infinite at nu = 0; |nu| above about 1e-154)";
 
 /// The Poisson ratio `nu` (dimensionless) if a collision is integrated for it: 1/nu^2 finite,
 /// so that the drag A = T_vis/nu^2 is; else the error naming `poisson` with that range. The

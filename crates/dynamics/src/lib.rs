@@ -15,7 +15,9 @@
 //! let collider = Collider::new(contact, CrackLaw::new(0.01)?, 1e-9)?;
 //! let c = collider.collide(0.045)?;
 //! assert_eq!(c.outcome, Outcome::Bouncing);
-//! println!("e = {}, contact time = {:?} s", c.e, c.contact_time);
+//! if let Some(t) = c.contact_time {
+//!     println!("e = {}, contact time = {t} s", c.e);
+//! }
 //! # Ok::<(), dynamics::DynamicsError>(())
 //! ```
 //!

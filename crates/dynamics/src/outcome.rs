@@ -93,7 +93,9 @@ pub struct Collision {
     pub beta_max: f64,
     /// Solver steps taken (by `method`).
     pub steps: usize,
-    /// The integrator that decided the outcome ([`Method::Auto`] resolved: Tsit45 or BDF).
+    /// The integrator that decided the outcome ([`Method::Auto`] resolved: Tsit45 or BDF), or
+    /// [`Method::Auto`] itself where nothing was integrated (an answer of the restitution
+    /// tables, [`Collision::from_rebound`]).
     pub method: Method,
     /// Trajectory, when [`crate::SolverOptions::record_trajectory`] is set.
     pub trajectory: Vec<TrajectoryPoint>,

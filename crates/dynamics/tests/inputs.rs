@@ -93,7 +93,7 @@ fn crack_speeds_beyond_the_limit_are_refused() {
 }
 
 /// A Poisson ratio of 0 is a valid elastic material (its JKR quantities exist) but no collision:
-/// the drag A = T_vis/nu^2 of Section 2.3 is infinite, so c_D is too at every T_vis. The
+/// the drag A = T_vis/nu^2 of Section 2.5 is infinite, so c_D is too at every T_vis. The
 /// collider names poisson, not t_vis (which it blamed before, as too large); nu = -0.2 and
 /// |nu| = 1e-3 (a finite, huge c_D) are collisions.
 #[test]

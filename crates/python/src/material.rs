@@ -17,7 +17,7 @@ use std::path::PathBuf;
 ///     Young's modulus E (Pa, > 0).
 /// poisson : float
 ///     Poisson ratio nu (dimensionless, -1 < nu < 0.5; nonzero for a collision, whose drag is
-///     A = T_vis/nu^2, Section 2.3).
+///     A = T_vis/nu^2, Section 2.5).
 /// density : float or Quantity
 ///     Density rho (kg/m^3, > 0).
 ///

@@ -91,7 +91,7 @@ def test_bad_values_name_the_argument_and_element():
         st.collide(CO2, t_vis=1e-9, v_in=0.0)
     with pytest.raises(ValueError, match=r"^t_vis = 0\.0: must be > 0"):
         st.collide(CO2, t_vis=0.0, v_in=1.0)
-    # a Poisson ratio of 0 is no collision (the drag A = T_vis/nu^2 of Section 2.3 is infinite)
+    # a Poisson ratio of 0 is no collision (the drag A = T_vis/nu^2 of Section 2.5 is infinite)
     flat = st.Material(gamma_sv=0.1, young=7e9, poisson=0.0, density=930.0)
     assert np.isfinite(st.jkr(flat).v_stick_jkr)
     nonzero = r"^poisson = 0\.0: must be .* nonzero for a collision"

@@ -1,8 +1,9 @@
 //! # thresholds
 //!
 //! One job: the threshold velocities that dust-growth codes need, built on collisions from
-//! `dynamics` (Arakawa & Krijt 2021, Sections 4.4, 5 and 6). It re-exports everything its
-//! functions take, so this one dependency answers "do these grains stick?".
+//! `dynamics` (Arakawa & Krijt 2021, Sections 4.4, 5 and 6). It re-exports the types its threshold
+//! functions take (materials, geometry, contact, crack law, collider and their errors), so this
+//! one dependency answers "do these grains stick?".
 //!
 //! ## Quick start
 //! ```

@@ -281,7 +281,8 @@ pub struct StickingThresholds {
     pub collisions: usize,
     /// Solver steps over all collisions (the cost of the search).
     pub steps: usize,
-    /// Which answered: the exact search or the master table.
+    /// Which answered: the exact search or the master table. At T_vis = 0 (the JKR limit,
+    /// answered in closed form by neither) the method that was asked for.
     pub method: ThresholdMethod,
 }
 
