@@ -85,7 +85,8 @@ impl Overrides {
 
     /// Resolves `name` (a preset or a JSON file) and applies the overrides. A bad value names
     /// the flag when it was overridden and the file (and field) when it came from the file.
-    /// `prefix` starts the message of an unknown name or unreadable file: `"--material: "` where
+    /// `prefix` starts the message of an unknown name, an unreadable file or a file's bad value:
+    /// `"--material: "` where
     /// the name came from that flag, `""` for `material NAME`, where the name alone is clear.
     pub fn resolve(&self, name: &str, prefix: &str) -> Result<NamedMaterial, CliError> {
         let (mut m, file) = match Material::preset(name) {
@@ -123,7 +124,7 @@ impl Overrides {
                 .iter()
                 .any(|(f, v)| *f == e.field && v.is_some());
             return Err(match file {
-                Some(path) if !overridden => CliError::Usage(format!("{path}: {e}")),
+                Some(path) if !overridden => CliError::Usage(format!("{prefix}{path}: {e}")),
                 _ => e.into(),
             });
         }
