@@ -50,7 +50,9 @@ enum Command {
     /// The relaxation time T_vis that reproduces a measured V_stick.
     ///
     /// V_stick exceeds V_stick,JKR for every T_vis > 0, so a measured value at or below
-    /// V_stick,JKR is refused; a range whose lower end is below it starts at t_vis_min = 0.
+    /// V_stick,JKR is refused; one within the model's T_vis -> 0 limit of V_stick (1.55e-4 above
+    /// V_stick,JKR, whose 14.18 is rounded) gives T_vis = 0, the JKR limit, with a warning; a
+    /// range whose lower end is below that limit starts at t_vis_min = 0.
     #[command(mut_arg("v_max", |a| a.help(args::FIT_V_MAX_HELP)))]
     FitTVis(commands::fit_t_vis::FitTVisArgs),
     /// Fragmentation velocity of aggregates V_frag = 10 V_stick.

@@ -120,7 +120,7 @@ elementwise! {
                 .map(|f| {
                     let kind = match f {
                         FitWarning::AboveDefaultSearchLimit { .. } => "fit_v_max",
-                        FitWarning::LowerEndAtJkr { .. } => "fit_jkr",
+                        FitWarning::AtJkrLimit { .. } | FitWarning::LowerEndAtJkr { .. } => "fit_jkr",
                     };
                     (i, kind, f.message_for("v_max="))
                 })

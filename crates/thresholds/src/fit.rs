@@ -3,7 +3,10 @@
 //! V_stick grows monotonically with T_vis from V_stick,JKR at T_vis -> 0, so
 //! `ln V_stick(T_vis) = ln V_measured` has one root in `ln T_vis`, bracketed by steps of a decade
 //! and found with the Illinois root finder of `numerics::roots`. A measured value at or below
-//! V_stick,JKR is reached by no T_vis > 0 ([`ThresholdsError::BelowJkr`]).
+//! V_stick,JKR is reached by no T_vis > 0 ([`ThresholdsError::BelowJkr`]). Nor is one just
+//! above it: the model's own T_vis -> 0 limit of V_stick lies 1.55e-4 above V_stick,JKR (whose
+//! 14.18 the paper rounds; 14.1844 from the model's potential), and a value between the two is
+//! fitted with T_vis = 0, the JKR limit, with a warning ([`FitWarning::AtJkrLimit`]).
 
 use crate::stick::{
     sticking_thresholds, SearchOptions, ThresholdMethod, DEFAULT_V_MAX_OVER_JKR, V_SEARCH_LIMIT,
@@ -46,10 +49,11 @@ pub const V_STICK_FIT_MAX: f64 = V_SEARCH_LIMIT / V_MAX_OVER_TARGET;
 /// Fitted relaxation times (s), with the measurement they were fitted to.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TVisFit {
-    /// T_vis reproducing the measured V_stick (s).
+    /// T_vis reproducing the measured V_stick (s); 0 when it lies at the T_vis -> 0 limit of
+    /// V_stick, within 1.55e-4 above V_stick,JKR ([`FitWarning::AtJkrLimit`]).
     pub t_vis: f64,
-    /// T_vis reproducing V_stick - dV (s); 0 when V_stick - dV is at or below V_stick,JKR (every
-    /// T_vis below `t_vis` is then consistent with the measurement).
+    /// T_vis reproducing V_stick - dV (s); 0 when V_stick - dV is at or below the T_vis -> 0
+    /// limit of V_stick (every T_vis below `t_vis` is then consistent with the measurement).
     pub t_vis_min: f64,
     /// T_vis reproducing V_stick + dV (s).
     pub t_vis_max: f64,
@@ -80,8 +84,17 @@ pub enum FitWarning {
         /// A `v_max` (m/s) that finds it: twice it, at most 1e4 m/s.
         v_max: f64,
     },
-    /// V_stick - dV is at or below V_stick,JKR, which every T_vis > 0 exceeds: `t_vis_min = 0`,
-    /// the JKR limit.
+    /// The measured V_stick lies above V_stick,JKR but at or below the model's T_vis -> 0 limit of
+    /// V_stick (1.55e-4 above V_stick,JKR, whose 14.18 the paper rounds), which every T_vis > 0
+    /// exceeds: `t_vis = 0`, the JKR limit.
+    AtJkrLimit {
+        /// The measured V_stick (m/s).
+        v_stick: f64,
+        /// V_stick,JKR (m/s).
+        v_stick_jkr: f64,
+    },
+    /// V_stick - dV is at or below the T_vis -> 0 limit of V_stick (at most 1.55e-4 above
+    /// V_stick,JKR), which every T_vis > 0 exceeds: `t_vis_min = 0`, the JKR limit.
     LowerEndAtJkr {
         /// V_stick - dV (m/s).
         low: f64,
@@ -111,10 +124,25 @@ impl FitWarning {
                 number(*limit),
                 number(*v_max)
             ),
-            FitWarning::LowerEndAtJkr { low, v_stick_jkr } => format!(
-                "V_stick - dV = {} m/s is at or below V_stick,JKR = {} m/s: t_vis_min = 0 (the JKR limit; no T_vis > 0 gives a V_stick that low)",
-                numerics::format::derived(*low),
+            FitWarning::AtJkrLimit {
+                v_stick,
+                v_stick_jkr,
+            } => format!(
+                "V_stick = {} m/s lies between V_stick,JKR = {} m/s and the T_vis -> 0 limit of V_stick, 1.55e-4 above it (the paper's 14.18 is rounded): T_vis = 0 (the JKR limit; no T_vis > 0 gives a V_stick that low)",
+                number(*v_stick),
                 number(*v_stick_jkr)
+            ),
+            FitWarning::LowerEndAtJkr { low, v_stick_jkr } => format!(
+                "V_stick - dV = {} m/s is at or below {}: t_vis_min = 0 (the JKR limit; no T_vis > 0 gives a V_stick that low)",
+                numerics::format::derived(*low),
+                if low <= v_stick_jkr {
+                    format!("V_stick,JKR = {} m/s", number(*v_stick_jkr))
+                } else {
+                    format!(
+                        "the T_vis -> 0 limit of V_stick, 1.55e-4 above V_stick,JKR = {} m/s",
+                        number(*v_stick_jkr)
+                    )
+                }
             ),
         }
     }
@@ -128,7 +156,8 @@ impl std::fmt::Display for FitWarning {
 
 impl TVisFit {
     /// The warnings of this fit ([`FitWarning`]): a V_stick + dV beyond the default search limit
-    /// when no `v_max` was given, and a V_stick - dV at or below V_stick,JKR.
+    /// when no `v_max` was given, a V_stick at the T_vis -> 0 limit and a V_stick - dV at or
+    /// below it.
     ///
     /// # Example
     /// ```
@@ -151,8 +180,14 @@ impl TVisFit {
                 v_max: (V_MAX_OVER_TARGET * top).min(V_SEARCH_LIMIT),
             });
         }
+        if self.t_vis == 0.0 {
+            out.push(FitWarning::AtJkrLimit {
+                v_stick: self.v_stick,
+                v_stick_jkr: self.v_stick_jkr,
+            });
+        }
         let low = self.v_stick - self.v_stick_err;
-        if self.v_stick_err > 0.0 && low <= self.v_stick_jkr {
+        if self.v_stick_err > 0.0 && self.t_vis_min == 0.0 {
             out.push(FitWarning::LowerEndAtJkr {
                 low,
                 v_stick_jkr: self.v_stick_jkr,
@@ -175,7 +210,9 @@ fn check_v_stick(v: f64) -> Result<(), OutOfRange> {
     }
 }
 
-/// Relaxation time (s) whose V_stick equals `v_target` (m/s, above V_stick,JKR).
+/// Relaxation time (s) whose V_stick equals `v_target` (m/s, above V_stick,JKR); 0 (the JKR
+/// limit) when `v_target` lies at or below the T_vis -> 0 limit of V_stick, 1.55e-4 above
+/// V_stick,JKR (no T_vis > 0 reaches it).
 ///
 /// Each trial T_vis is searched up to `2 v_target` (or `opts.v_max` if larger), so a target above
 /// the default search limit of [`sticking_thresholds`] is still found.
@@ -231,16 +268,16 @@ fn solve(
             (hi, f_hi) = (lo, f_lo);
             lo -= BRACKET_STEP;
             if lo < floor {
-                // V_stick is within rounding of V_stick,JKR: the target is at the JKR limit
-                return Ok(lo.exp());
+                // V_stick at T_VIS_FLOOR is its T_vis -> 0 limit (1.55e-4 above V_stick,JKR)
+                // to 1e-6 and still above the target: the target is at the JKR limit, T_vis = 0
+                // (the tables and the search then give the same answer)
+                return Ok(0.0);
             }
             f_lo = match f(lo) {
                 Ok(v) => v,
                 // below the T_vis that can be integrated (dynamics::MAX_CRACK_SPEED_NUMBER),
-                // V_stick has reached the JKR limit: the target lies there
-                Err(e) if e.out_of_range().is_some_and(|o| o.field == "t_vis") => {
-                    return Ok(lo.exp())
-                }
+                // V_stick has reached its T_vis -> 0 limit, still above the target: T_vis = 0
+                Err(e) if e.out_of_range().is_some_and(|o| o.field == "t_vis") => return Ok(0.0),
                 Err(e) => return Err(e),
             };
         }

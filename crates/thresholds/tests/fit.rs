@@ -54,3 +54,41 @@ fn a_fit_next_to_the_cliff_gives_back_its_v_stick() {
         }
     }
 }
+
+/// Next to the JKR limit (Section 5.1): the paper's V_stick,JKR rounds its 14.18, and the
+/// model's own T_vis -> 0 limit of V_stick lies 1.55e-4 above it (within that rounding, 1.8e-4).
+/// A target between the two is reached by no T_vis > 0 (V_stick at 1e-19 s, near the smallest
+/// T_vis the collisions integrate, is still above it): the tables and the search alike fit
+/// T_vis = 0, the JKR limit, with a warning, instead of stopping at the smallest T_vis each
+/// tried (1e-21 and 1e-20 s before). A target above the limit is fitted with a T_vis > 0 whose
+/// V_stick gives it back, and a range reaching into the gap starts at t_vis_min = 0.
+#[test]
+fn a_target_between_v_stick_jkr_and_the_model_limit_is_the_jkr_limit() {
+    use thresholds::FitWarning;
+    let c = Contact::new(Material::co2(), Geometry::identical(60e-6)).unwrap();
+    let law = CrackLaw::new(0.01).unwrap();
+    let jkr = c.v_stick_jkr();
+    let gap = jkr * (1.0 + 5e-5);
+    for opts in [SearchOptions::default(), SearchOptions::exact()] {
+        let lowest = sticking_thresholds(&c, &law, 1e-19, &opts).unwrap();
+        assert!(lowest.v_stick.unwrap() > gap);
+        let fit = fit_t_vis(&c, &law, gap, 0.0, &opts).unwrap();
+        assert_eq!((fit.t_vis, fit.t_vis_min, fit.t_vis_max), (0.0, 0.0, 0.0));
+        assert!(matches!(
+            fit.warnings()[..],
+            [FitWarning::AtJkrLimit { .. }]
+        ));
+        // above the limit: a T_vis > 0 gives the target back
+        let above = jkr * (1.0 + 5e-4);
+        let fit = fit_t_vis(&c, &law, above, above - gap, &opts).unwrap();
+        assert!(fit.t_vis > 0.0 && fit.t_vis_min == 0.0);
+        let back = sticking_thresholds(&c, &law, fit.t_vis, &opts).unwrap();
+        assert!((back.v_stick.unwrap() / above - 1.0).abs() < 1e-5);
+        assert!(matches!(
+            fit.warnings()[..],
+            [FitWarning::LowerEndAtJkr { .. }]
+        ));
+        let message = fit.warnings()[0].to_string();
+        assert!(message.contains("1.55e-4 above V_stick,JKR"), "{message}");
+    }
+}

@@ -310,8 +310,10 @@ def fit_t_vis(
     -----
     V_stick grows monotonically with T_vis from V_stick,JKR, so ln V_stick(T_vis) = ln V has
     one root in ln T_vis (Illinois). A V_stick at or below V_stick,JKR is reached by no T_vis
-    (``ValueError`` giving V_stick,JKR); a range whose lower end is below it starts at
-    ``t_vis_min = 0``, with a warning. Near the JKR limit V_stick hardly depends on T_vis
+    (``ValueError`` giving V_stick,JKR); one within the model's T_vis -> 0 limit of V_stick
+    (1.55e-4 above V_stick,JKR, whose 14.18 the paper rounds) gives ``t_vis = 0``, the JKR
+    limit, and a range whose lower end is below that limit starts at ``t_vis_min = 0``, each
+    with a warning. Near the JKR limit V_stick hardly depends on T_vis
     (CO2 at 60 um: d ln V_stick / d ln T_vis is 4e-3 at T_vis = 1e-12 s, 6e-5 at 1e-14 s),
     and the fitted T_vis is only as sharp as the threshold (1e-5 from the tables, about 1e-7
     from the search) divided by that slope: ``method="table"`` and ``method="search"`` may

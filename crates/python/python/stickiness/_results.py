@@ -227,9 +227,10 @@ class TVisFit(_Columns):
     Attributes
     ----------
     t_vis : float or ndarray
-        T_vis for the measured V_stick (s).
+        T_vis for the measured V_stick (s); 0 (the JKR limit) when it lies within the T_vis -> 0
+        limit of V_stick, 1.55e-4 above V_stick,JKR.
     t_vis_min : float or ndarray
-        T_vis for V_stick - dV (s); 0 when that is at or below V_stick,JKR.
+        T_vis for V_stick - dV (s); 0 when that is at or below the T_vis -> 0 limit.
     t_vis_max : float or ndarray
         T_vis for V_stick + dV (s).
     v_stick_jkr : float or ndarray
