@@ -44,13 +44,15 @@ pub mod error;
 pub mod geometry;
 pub mod material;
 pub mod pair;
+pub mod warning;
 
 pub use dimensionless::Dimensionless;
 pub use error::ContactError;
 pub use geometry::Geometry;
 pub use material::{elastic_from_sound_speeds, Material, PRESETS};
 pub use numerics::OutOfRange;
-pub use pair::{
-    Contact, Warning, JKR_QUANTITIES, PLAUSIBLE_RADIUS, PLAUSIBLE_SPEED_MAX, SURFACE_FORCE_RANGE,
-    TABOR_MIN,
+pub use pair::{Contact, JKR_QUANTITIES, SURFACE_FORCE_RANGE, TABOR_MIN};
+pub use warning::{
+    Warning, PLAUSIBLE_DENSITY, PLAUSIBLE_GAMMA_SV, PLAUSIBLE_RADIUS, PLAUSIBLE_SPEED_MAX,
+    PLAUSIBLE_YOUNG,
 };

@@ -1,7 +1,7 @@
 //! The contact of two bodies of one material ([`Geometry`]): JKR equilibrium, forces, energies
 //! (Section 2) and the JKR sticking and breaking energies (Sections 5.1 and 6).
 
-use crate::{ContactError, Geometry, Material};
+use crate::{ContactError, Geometry, Material, Warning};
 use numerics::format::number;
 use numerics::{positive, OutOfRange};
 use std::f64::consts::PI;
@@ -35,92 +35,6 @@ pub const TABOR_MIN: f64 = 1.0;
 /// Grains of this radius (m) tell whether a contact's infinite units come from the material
 /// constants or from its radius (`Contact::new`): a micron, well inside [`PLAUSIBLE_RADIUS`].
 const UNITS_REFERENCE_RADIUS: f64 = 1e-6;
-
-/// Plausible grain radii R1 (m): 10 nm (below, the Tabor parameter of ices falls under 1) to
-/// 1 cm (beyond, "grains" are pebbles). Outside, a result comes with a warning, since a radius
-/// given in the wrong unit (60 for 60 um) is the likeliest slip.
-pub const PLAUSIBLE_RADIUS: (f64, f64) = (1e-8, 1e-2);
-
-/// Impact speeds above this (m/s) come with a warning: 1 km/s is far above grain collision
-/// speeds in discs (tens of m/s), where contact mechanics no longer describes the impact.
-pub const PLAUSIBLE_SPEED_MAX: f64 = 1e3;
-
-/// A condition under which the model's results should be read with care; its
-/// [`std::fmt::Display`] form is the sentence shown to the user.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Warning {
-    /// The Tabor parameter is below [`TABOR_MIN`]: surface forces act outside the contact and JKR
-    /// theory, on which the model stands, does not apply (Section 2.2).
-    JkrOutsideValidity {
-        /// The Tabor parameter mu (dimensionless).
-        tabor: f64,
-    },
-    /// A radius outside [`PLAUSIBLE_RADIUS`] (valid, but likely given in the wrong unit).
-    ImplausibleRadius {
-        /// The input (`radius`).
-        field: &'static str,
-        /// Its value (m).
-        value: f64,
-    },
-    /// A speed above [`PLAUSIBLE_SPEED_MAX`].
-    ImplausibleSpeed {
-        /// The input (`v_in`).
-        field: &'static str,
-        /// Its value (m/s).
-        value: f64,
-    },
-}
-
-impl Warning {
-    /// A warning for an impact speed `value` (m/s) of the input `field` above
-    /// [`PLAUSIBLE_SPEED_MAX`], else `None`.
-    pub fn for_speed(field: &'static str, value: f64) -> Option<Self> {
-        (value > PLAUSIBLE_SPEED_MAX).then_some(Self::ImplausibleSpeed { field, value })
-    }
-
-    /// A warning for a radius `value` (m) of the input `field` outside [`PLAUSIBLE_RADIUS`],
-    /// else `None`.
-    pub fn for_radius(field: &'static str, value: f64) -> Option<Self> {
-        let (lo, hi) = PLAUSIBLE_RADIUS;
-        (value < lo || value > hi).then_some(Self::ImplausibleRadius { field, value })
-    }
-}
-
-impl std::fmt::Display for Warning {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match *self {
-            Warning::JkrOutsideValidity { tabor } => write!(
-                f,
-                "Tabor parameter mu = {} < {}: JKR theory (mu >> 1) is outside its validity for these grains (Arakawa & Krijt 2021, Section 2.2)",
-                number(tabor),
-                number(TABOR_MIN)
-            ),
-            Warning::ImplausibleRadius { field, value } => {
-                let (lo, hi) = PLAUSIBLE_RADIUS;
-                write!(
-                    f,
-                    "{field} = {} m is outside the plausible range {} - {} m of dust and ice grains",
-                    number(value),
-                    number(lo),
-                    number(hi)
-                )?;
-                // a value read as micrometres that lands inside the range: suggest it
-                let micro = value * 1e-6;
-                if value > hi && (lo..=hi).contains(&micro) {
-                    let digits = number(value);
-                    write!(f, "; did you mean {}e-6 m?", digits.trim_end_matches(".0"))?;
-                }
-                Ok(())
-            }
-            Warning::ImplausibleSpeed { field, value } => write!(
-                f,
-                "{field} = {} m/s is above {} m/s, far beyond grain collision speeds in discs, where contact mechanics no longer applies",
-                number(value),
-                number(PLAUSIBLE_SPEED_MAX)
-            ),
-        }
-    }
-}
 
 /// Head-on contact of two bodies ([`Geometry`]) made of one [`Material`].
 ///
@@ -329,13 +243,15 @@ impl Contact {
     }
 
     /// Conditions under which the results of this contact should be read with care: a radius
-    /// R1 (`radius`) or a different R2 (`radius2`) outside [`PLAUSIBLE_RADIUS`], a Tabor
+    /// R1 (`radius`) or a different R2 (`radius2`) outside [`PLAUSIBLE_RADIUS`](crate::PLAUSIBLE_RADIUS),
+    /// a material constant outside its plausible range ([`Warning::for_material`]), a Tabor
     /// parameter below [`TABOR_MIN`].
     pub fn warnings(&self) -> Vec<Warning> {
         let r2 = self.geometry.r2().filter(|&r2| r2 != self.r1());
         let mut out: Vec<Warning> = Warning::for_radius("radius", self.r1())
             .into_iter()
             .chain(r2.and_then(|r2| Warning::for_radius("radius2", r2)))
+            .chain(Warning::for_material(&self.material))
             .collect();
         if self.tabor_below_min() {
             out.push(Warning::JkrOutsideValidity {
@@ -352,6 +268,7 @@ impl Contact {
         let r2 = self.geometry.r2().filter(|&r2| r2 != self.r1());
         Warning::for_radius("radius", self.r1()).is_some()
             || r2.is_some_and(|r2| Warning::for_radius("radius2", r2).is_some())
+            || Warning::any_for_material(&self.material)
             || self.tabor_below_min()
     }
 

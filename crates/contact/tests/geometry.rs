@@ -186,3 +186,51 @@ fn radii_beyond_f64_are_refused() {
     let e = Contact::new(Material::co2(), Geometry::spheres(1e300, 1e299)).unwrap_err();
     assert!(e.to_string().starts_with("radius = 1e+300"), "{e}");
 }
+
+/// A material constant in cgs or in GPa is valid input but earns a warning that names it and
+/// suggests the SI value: CO2 of Section 3 (gamma_SV = 80 mJ/m^2 = 80 erg/cm^2, E = 10.7 GPa,
+/// rho = 1.56 g/cm^3) written in those units; the paper's CO2 and H2O earn none.
+#[test]
+fn a_material_constant_in_another_unit_warns() {
+    let g = Geometry::identical(60e-6);
+    for m in [Material::co2(), Material::h2o()] {
+        assert!(Contact::new(m, g).unwrap().warnings().is_empty());
+    }
+    let cases = [
+        (
+            Material {
+                gamma_sv: 80.0,
+                ..Material::co2()
+            },
+            "gamma_sv = 80.0 J/m^2",
+            "given in erg/cm^2 (mJ/m^2)? that is 0.08 J/m^2",
+        ),
+        (
+            Material {
+                young: 10.7,
+                ..Material::co2()
+            },
+            "young = 10.7 Pa",
+            "given in GPa? that is 10700000000.0 Pa",
+        ),
+        (
+            Material {
+                density: 1.56,
+                ..Material::co2()
+            },
+            "density = 1.56 kg/m^3",
+            "given in g/cm^3? that is 1560.0 kg/m^3",
+        ),
+    ];
+    for (m, starts, hint) in cases {
+        let c = Contact::new(m, g).unwrap();
+        let w = c.warnings();
+        assert!(c.has_warnings());
+        assert!(
+            matches!(w[..], [Warning::ImplausibleMaterial { .. }]),
+            "{w:?}"
+        );
+        let text = w[0].to_string();
+        assert!(text.starts_with(starts) && text.ends_with(hint), "{text}");
+    }
+}

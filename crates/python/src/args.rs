@@ -308,6 +308,7 @@ pub fn warned(i: usize, warnings: impl IntoIterator<Item = Warning>) -> Warned {
                 Warning::JkrOutsideValidity { .. } => "tabor",
                 Warning::ImplausibleRadius { .. } => "radius",
                 Warning::ImplausibleSpeed { .. } => "speed",
+                Warning::ImplausibleMaterial { field, .. } => field,
             };
             (i, kind, w.to_string())
         })

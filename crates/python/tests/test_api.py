@@ -161,6 +161,14 @@ def test_warnings():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         st.jkr(CO2, radius=60e-6)  # no warning for the paper's grains
+    # CO2's constants of Section 3 in cgs (80 erg/cm^2, 1.56 g/cm^3): named, with the SI value
+    cgs = CO2.replace(gamma_sv=80.0, density=1.56)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        st.v_stick(cgs, [60e-6, 30e-6], 1e-9)
+    messages = [str(w.message) for w in caught]
+    assert any("gamma_sv = 80.0 J/m^2" in m and "that is 0.08 J/m^2" in m for m in messages)
+    assert any("density = 1.56 kg/m^3" in m and "that is 1560.0 kg/m^3" in m for m in messages)
     assert issubclass(st.StickinessWarning, UserWarning)
     assert issubclass(st.SolverError, RuntimeError)
 

@@ -46,11 +46,35 @@ C_A_MAX = 1e8
 RESTITUTION_NODES = 8
 
 
-def _pair(name: str, value: Any, n: int) -> Tuple[np.ndarray, ...]:
-    """A tuple of ``n`` equal-length 1-d float arrays (``ValueError`` naming ``name``)."""
-    if not isinstance(value, (tuple, list)) or len(value) != n:
-        raise ValueError(f"{name}: expected a tuple of {n} arrays, got {type(value).__name__}")
+def _columns(name: str, value: Any, names: str) -> None:
+    """``value`` is a tuple of ``len(names.split(', '))`` columns ``(names)``, else a
+    ``ValueError`` naming ``name`` (a list is refused: a list of rows, one collision a row,
+    would be read as columns when there are as many rows as columns)."""
+    n = len(names.split(", "))
+    if isinstance(value, tuple) and len(value) == n:
+        return
+    if isinstance(value, np.ndarray) and value.ndim == 2 and n in value.shape:
+        how = {
+            (True, False): "tuple(a.T), its columns",
+            (False, True): "tuple(a), its rows",
+            (True, True): "tuple(a.T) if a row is a collision, tuple(a) if a row is a quantity",
+        }[(value.shape[1] == n, value.shape[0] == n)]
+        got = f"an array of shape {value.shape}: pass {how}"
+    elif isinstance(value, list):
+        got = "a list: a table of rows (one collision a row) goes in as tuple(np.transpose(rows))"
+    elif isinstance(value, tuple):
+        got = f"a tuple of length {len(value)}"
+    else:
+        got = type(value).__name__
+    raise ValueError(f"{name}: expected a tuple ({names}) of {n} arrays, one a column; got {got}")
+
+
+def _pair(name: str, value: Any) -> Tuple[np.ndarray, ...]:
+    """A tuple of 1-d float arrays of one length, the last (a sigma) one number for all data or
+    one each (``ValueError`` naming ``name``)."""
     arrays = [np.atleast_1d(_args.float_array(name, v)).astype(float) for v in value]
+    if arrays[-1].shape == (1,) and arrays[0].ndim == 1:
+        arrays[-1] = np.full(arrays[0].shape, arrays[-1][0])
     lengths = {a.shape for a in arrays}
     if len(lengths) != 1 or arrays[0].ndim != 1:
         shapes = ", ".join(str(a.shape) for a in arrays)
@@ -94,8 +118,7 @@ class Data:
             threshold = (value, sigma)
         outcomes = None
         if sticking is not None:
-            if not isinstance(sticking, (tuple, list)) or len(sticking) != 2:
-                raise ValueError("sticking: expected (v_in, stuck): speeds (m/s) and booleans")
+            _columns("sticking", sticking, "v_in, stuck")
             v = np.atleast_1d(_args.float_array("sticking", _args.si("v_in", sticking[0])))
             stuck = np.atleast_1d(np.asarray(sticking[1]))
             # empty arrays (float64 by default) are named as such by the shape check below
@@ -111,11 +134,13 @@ class Data:
             outcomes = (v.astype(float), stuck.astype(bool))
         bounces = None
         if restitution is not None:
-            if isinstance(restitution, (tuple, list)) and len(restitution) == 3:
-                restitution = tuple(_args.si("v_in", r) if i == 0 else r for i, r in enumerate(restitution))
-            v, e, e_err = _pair("restitution", restitution, 3)
+            _columns("restitution", restitution, "v_in, e, e_err")
+            restitution = (_args.si("v_in", restitution[0]),) + restitution[1:]
+            v, e, e_err = _pair("restitution", restitution)
             _check("restitution", "v_in", v, np.isfinite(v) & (v > 0), "> 0 and finite (m/s)")
-            _check("restitution", "e", e, np.isfinite(e) & (e >= 0) & (e <= 1), "within 0 .. 1")
+            _check("restitution", "e", e, np.isfinite(e) & (e >= 0) & (e <= 1),
+                   "within 0 .. 1, |V_out|/V_in as measured (a double collision's Collision.e is "
+                   "negative, its e_observed 0)")
             _check("restitution", "e_err", e_err, np.isfinite(e_err) & (e_err > 0), "> 0 and finite")
             bounces = (v, e, e_err)
         return cls(threshold, outcomes, bounces)
@@ -260,28 +285,59 @@ class Model:
 
     def log_likelihood(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
         """ln L of the data for each walker (``-inf`` where the data are impossible)."""
-        n = t_vis.size
-        total = np.zeros(n)
-        data = self.data
-        if data.v_stick is not None or data.sticking is not None:
-            vs = self.v_stick(t_vis, gamma_sv)
-            if data.v_stick is not None:
-                value, sigma = data.v_stick
-                clipped = vs if self.v_max is None else np.minimum(vs, self.v_max)
-                q = (clipped[:, 0] if clipped.shape[1] == 1
-                     else weighted_quantile(clipped, self.sizes.weights, self.quantile))
-                total += -0.5 * ((np.asarray(q) - value) / sigma) ** 2
-            if self.outcomes is not None:
-                total += self.outcomes.log_likelihood(vs)
-        if data.restitution is not None:
-            _, e, e_err = data.restitution
-            model = self.e_observed(t_vis, gamma_sv)
-            z = -0.5 * ((model - e[None, None, :]) / e_err) ** 2
+        total = np.zeros(t_vis.size)
+        vs = self._v_stick_if_needed(t_vis, gamma_sv)
+        if self.data.v_stick is not None:
+            total += -0.5 * self._threshold_z(vs) ** 2
+        if self.outcomes is not None:
+            total += self.outcomes.log_likelihood(vs)
+        if self.data.restitution is not None:
+            z = self._restitution_ln(t_vis, gamma_sv)
             # the radius of each collision is unknown: a mixture over the sample's nodes
             top = z.max(axis=1, keepdims=True)
             mix = top[:, 0, :] + np.log(np.exp(z - top).transpose(0, 2, 1) @ self.e_weights)
             total += mix.sum(axis=1)
         return total
+
+    def misfit(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> Tuple[np.ndarray, int]:
+        """chi^2 of the Gaussian data (the threshold and the coefficients of restitution, each
+        of those at the radius of the sample that fits it best) for each walker, and their
+        number (0: sticking outcomes alone, chi^2 0)."""
+        chi2 = np.zeros(t_vis.size)
+        n = 0
+        if self.data.v_stick is not None:
+            chi2 += self._threshold_z(self._v_stick_if_needed(t_vis, gamma_sv)) ** 2
+            n += 1
+        if self.data.restitution is not None:
+            z = self._restitution_ln(t_vis, gamma_sv)
+            chi2 += -2.0 * z.max(axis=1).sum(axis=1)
+            n += z.shape[2]
+        return chi2, n
+
+    def _v_stick_if_needed(
+        self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]
+    ) -> Optional[np.ndarray]:
+        """:meth:`v_stick` where a threshold or sticking outcomes need it, else None."""
+        if self.data.v_stick is None and self.data.sticking is None:
+            return None
+        return self.v_stick(t_vis, gamma_sv)
+
+    def _threshold_z(self, vs: Any) -> np.ndarray:
+        """(V_stick - V) / sigma of the measured threshold for each walker (rows of ``vs``):
+        V_stick of the one radius, or its ``v_stick_quantile`` over the sample."""
+        assert self.data.v_stick is not None
+        value, sigma = self.data.v_stick
+        clipped = vs if self.v_max is None else np.minimum(vs, self.v_max)
+        q = (clipped[:, 0] if clipped.shape[1] == 1
+             else weighted_quantile(clipped, self.sizes.weights, self.quantile))
+        return (np.asarray(q) - value) / sigma
+
+    def _restitution_ln(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
+        """-(e_model - e)^2 / (2 sigma^2) of shape (walkers, restitution nodes, speeds)."""
+        assert self.data.restitution is not None
+        _, e, e_err = self.data.restitution
+        model = self.e_observed(t_vis, gamma_sv)
+        return -0.5 * ((model - e[None, None, :]) / e_err) ** 2
 
 
 class Outcomes:
