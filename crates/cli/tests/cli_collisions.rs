@@ -28,9 +28,13 @@ fn collide_outcomes_and_keys() {
             "--json",
         ]);
         assert_eq!(j["outcome"], outcome);
-        for key in ["e", "v_out", "contact_time"] {
+        for key in ["e", "e_observed", "v_out", "contact_time"] {
             assert!(j.get(key).is_some(), "missing {key}");
         }
+        // e as an experiment observes it (Section 4.4): a rebound that sticks or comes back
+        // for a second contact is seen as e = 0; a bouncing one as its e
+        let (e, seen) = (j["e"].as_f64().unwrap(), j["e_observed"].as_f64().unwrap());
+        assert_eq!(seen, if outcome == "bouncing" { e } else { 0.0 });
     }
 }
 

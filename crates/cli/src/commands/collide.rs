@@ -95,6 +95,8 @@ pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
     r.warn(Warning::for_speed("v_in", args.v_in));
     r.text("outcome", c.outcome.as_str());
     r.number("e", c.e, "")?;
+    // e as an experiment observes it: 0 for sticking and double collisions (Section 4.4)
+    r.number("e_observed", c.observed_e(), "")?;
     r.number("v_out", c.v_out, "m/s")?;
     if answered == thresholds::ThresholdMethod::Table {
         r.optional(
