@@ -18,6 +18,7 @@ import numpy as np
 from . import _args, _core
 from ._args import StickinessWarning
 from ._core import DEFAULT_K, DEFAULT_RADIUS, DEFAULT_REL_TOL
+from ._judge import judged
 from ._likelihood import PARAMETERS, Data, Model, priors as _priors
 from ._posterior import Posterior
 from ._sampler import MIN_WALKERS, integrated_time, sample
@@ -53,16 +54,6 @@ INIT_MIN_WIDTH = 1e-3
 SEED_SPEEDS = 5
 #: ... and gamma_SV values across its prior when it is free.
 SEED_GAMMAS = 8
-#: A 95 % interval that reaches into this outer share of a prior's range (in log10, where the
-#: prior is uniform) at one end is bounded there by the prior, not by the data: a flat
-#: posterior puts 5 % of its samples in each such share, one the data confine puts none.
-PRIOR_EDGE = 0.05
-#: The Gaussian data (threshold, coefficients of restitution) at the chain's best point more
-#: than this many standard deviations (of chi^2 with their number of degrees of freedom, by
-#: the Wilson-Hilferty transform) from the model: they are not fitted within the priors
-#: (p < 1.3e-3 for data the model made).
-MISFIT_SIGMAS = 3.0
-
 #: T_vis (s) of the one V_stick computed before sampling to check the arguments (k, rel_tol,
 #: the geometry) with the core's messages: the paper's CO2 value.
 DEFAULT_T_VIS_CHECK = 1e-9
@@ -424,7 +415,7 @@ def infer(
             StickinessWarning,
             stacklevel=2,
         )
-    for message in _judged(model, chain, run.log_prob, burn, free, lo, hi, model_args):
+    for message in judged(model, chain, run.log_prob, burn, free, lo, hi, model_args):
         warnings.warn(message, StickinessWarning, stacklevel=2)
     return Posterior(
         chain=10.0 ** chain,
@@ -440,64 +431,3 @@ def infer(
         autocorr_time={p: float(tau[i]) for i, p in enumerate(free)},
         acceptance_fraction=float(np.mean(run.acceptance_fraction)),
     )
-
-
-
-def _judged(
-    model: Model,
-    chain: np.ndarray,
-    log_prob: np.ndarray,
-    burn: int,
-    free: Tuple[str, ...],
-    lo: np.ndarray,
-    hi: np.ndarray,
-    model_args: Callable[[np.ndarray], Tuple[np.ndarray, Optional[np.ndarray]]],
-) -> list:
-    """What a user should know before citing the posterior: each parameter whose 95 % interval
-    reaches a bound of its prior (:data:`PRIOR_EDGE`), and Gaussian data the chain's best point
-    leaves more than :data:`MISFIT_SIGMAS` from the model. ``chain`` (steps, walkers, free) is
-    in log10 of the parameters, ``log_prob`` (steps, walkers) its ln-likelihood."""
-    out = []
-    after = chain[burn:].reshape(-1, len(free))
-    for i, p in enumerate(free):
-        low, high = np.quantile((after[:, i] - lo[i]) / (hi[i] - lo[i]), [0.025, 0.975])
-        bounds = [f"{10.0 ** b:.3g} {PARAMETERS[p]}" for b in (lo[i], hi[i])]
-        if low < PRIOR_EDGE and high > 1.0 - PRIOR_EDGE:
-            out.append(
-                f"the posterior of {p} reaches both bounds of its prior ({bounds[0]} and "
-                f"{bounds[1]}): the data hardly constrain it, and its quantiles are the prior's"
-            )
-        elif low < PRIOR_EDGE or high > 1.0 - PRIOR_EDGE:
-            side, other, q = ("lower", "upper", "97.5 %") if low < PRIOR_EDGE \
-                else ("upper", "lower", "2.5 %")
-            out.append(
-                f"the posterior of {p} reaches the {side} bound of its prior "
-                f"({bounds[0] if side == 'lower' else bounds[1]}): its quantiles there are the prior's, "
-                f"not the data's; the data set an {other} limit (its {q} quantile), or widen "
-                f"priors={{'{p}': (lo, hi)}}"
-            )
-    best = chain.reshape(-1, len(free))[int(np.argmax(log_prob))]
-    chi2, n = model.misfit(*model_args(10.0 ** best[None, :]))
-    if n and _chi2_sigmas(float(chi2[0]), n) > MISFIT_SIGMAS:
-        point = ", ".join(f"{p} = {10.0 ** best[i]:.3g} {PARAMETERS[p]}" for i, p in enumerate(free))
-        what = " and ".join(
-            w for w, given in (
-                ("the measured threshold", model.data.v_stick is not None),
-                ("the coefficients of restitution", model.data.restitution is not None),
-            ) if given
-        )
-        values = "1 value" if n == 1 else f"{n} values"
-        out.append(
-            f"the data are not fitted within the priors: at the chain's best point ({point}) "
-            f"{what} lie chi^2 = {float(chi2[0]):.3g} from the model ({values}, more than "
-            f"{MISFIT_SIGMAS:g} sigma); check their units (m/s) and the priors: the posterior "
-            f"follows the priors' bounds, not the data"
-        )
-    return out
-
-
-def _chi2_sigmas(chi2: float, n: int) -> float:
-    """The normal deviate of ``chi2`` with ``n`` degrees of freedom (Wilson & Hilferty 1931:
-    (chi2/n)^(1/3) is nearly normal with mean 1 - 2/(9n) and variance 2/(9n))."""
-    v = 2.0 / (9.0 * n)
-    return ((chi2 / n) ** (1.0 / 3.0) - (1.0 - v)) / math.sqrt(v)
