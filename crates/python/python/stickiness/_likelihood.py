@@ -286,11 +286,12 @@ class Model:
     def log_likelihood(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
         """ln L of the data for each walker (``-inf`` where the data are impossible)."""
         total = np.zeros(t_vis.size)
-        vs = self._v_stick_if_needed(t_vis, gamma_sv)
-        if self.data.v_stick is not None:
-            total += -0.5 * self._threshold_z(vs) ** 2
-        if self.outcomes is not None:
-            total += self.outcomes.log_likelihood(vs)
+        if self.data.v_stick is not None or self.outcomes is not None:
+            vs = self.v_stick(t_vis, gamma_sv)
+            if self.data.v_stick is not None:
+                total += -0.5 * self._threshold_z(vs) ** 2
+            if self.outcomes is not None:
+                total += self.outcomes.log_likelihood(vs)
         if self.data.restitution is not None:
             z = self._restitution_ln(t_vis, gamma_sv)
             # the radius of each collision is unknown: a mixture over the sample's nodes
@@ -306,7 +307,7 @@ class Model:
         chi2 = np.zeros(t_vis.size)
         n = 0
         if self.data.v_stick is not None:
-            chi2 += self._threshold_z(self._v_stick_if_needed(t_vis, gamma_sv)) ** 2
+            chi2 += self._threshold_z(self.v_stick(t_vis, gamma_sv)) ** 2
             n += 1
         if self.data.restitution is not None:
             z = self._restitution_ln(t_vis, gamma_sv)
@@ -314,15 +315,7 @@ class Model:
             n += z.shape[2]
         return chi2, n
 
-    def _v_stick_if_needed(
-        self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]
-    ) -> Optional[np.ndarray]:
-        """:meth:`v_stick` where a threshold or sticking outcomes need it, else None."""
-        if self.data.v_stick is None and self.data.sticking is None:
-            return None
-        return self.v_stick(t_vis, gamma_sv)
-
-    def _threshold_z(self, vs: Any) -> np.ndarray:
+    def _threshold_z(self, vs: np.ndarray) -> np.ndarray:
         """(V_stick - V) / sigma of the measured threshold for each walker (rows of ``vs``):
         V_stick of the one radius, or its ``v_stick_quantile`` over the sample."""
         assert self.data.v_stick is not None
