@@ -211,7 +211,9 @@ impl MasterTables {
     /// ([`contact::Contact::dimensionless`]) for the modulus ratio `k`, with the search limit
     /// `f_max` = v_max / V_stick,JKR: a ratio above it is `None` (nothing below v_max). `None`
     /// altogether where the tables do not vouch for the answer (k outside 0.005-0.05, the thin
-    /// bands at the ends, within [`V_MAX_MARGIN`] of the limit).
+    /// bands at the ends, within [`V_MAX_MARGIN`] of the limit), and for a `c_d` or `c_a` that
+    /// is not positive and finite: the tables vouch for no such point, and
+    /// [`crate::sticking_thresholds`] then leaves it to the search, which names the bad input.
     pub fn ratios(&self, c_d: f64, c_a: f64, k: f64, f_max: f64) -> Option<Ratios> {
         if !(c_d > 0.0 && c_a > 0.0 && c_d.is_finite() && c_a.is_finite()) {
             return None;
