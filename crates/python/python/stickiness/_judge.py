@@ -47,13 +47,15 @@ def judged(
                 f"{bounds[1]}): the data hardly constrain it, and its quantiles are the prior's"
             )
         elif low < PRIOR_EDGE or high > 1.0 - PRIOR_EDGE:
-            side, other, q = ("lower", "upper", "97.5 %") if low < PRIOR_EDGE \
-                else ("upper", "lower", "2.5 %")
+            # the bound reached, and the limit the data set at the other end
+            bound, limit = (
+                (f"lower bound of its prior ({bounds[0]})", "an upper limit (its 97.5 % quantile)")
+                if low < PRIOR_EDGE
+                else (f"upper bound of its prior ({bounds[1]})", "a lower limit (its 2.5 % quantile)")
+            )
             out.append(
-                f"the posterior of {p} reaches the {side} bound of its prior "
-                f"({bounds[0] if side == 'lower' else bounds[1]}): its quantiles there are the prior's, "
-                f"not the data's; the data set an {other} limit (its {q} quantile), or widen "
-                f"priors={{'{p}': (lo, hi)}}"
+                f"the posterior of {p} reaches the {bound}: its quantiles there are the prior's, "
+                f"not the data's; the data set {limit}, or widen priors={{'{p}': (lo, hi)}}"
             )
     best = chain.reshape(-1, len(free))[int(np.argmax(log_prob))]
     chi2, n = model.misfit(*model_args(10.0 ** best[None, :]))
