@@ -53,3 +53,49 @@ def test_the_misfit_deviate_reads_the_chi2_table():
 
     for n, point in ((1, 10.828), (10, 29.588), (100, 149.449)):
         assert _chi2_sigmas(point, n) == pytest.approx(3.090, abs=0.05)
+
+
+def test_the_misfit_of_restitution_is_a_normal_deviate():
+    # one radius: z = (e - e_model) / sigma, so chi^2 is the sum of squares (its definition);
+    # two radii of equal weight and e midway between theirs: the mixture's median, z = 0
+    from stickiness._likelihood import Data, Model
+
+    v = np.array([0.05, 0.08, 0.12])
+    t = np.array([3e-10])
+    model_e = st.collide(CO2, R, 3e-10, v, method="table").e_observed  # as the likelihood's
+    e = np.clip(model_e + np.array([0.01, -0.02, 0.03]), 0, 1)
+    one = Model(CO2, st.SizeDistribution([R]), None, False, 0.01,
+                Data.parse(None, None, (v, e, 0.01)), "table", 1e-6, 0.5)
+    chi2, n = one.misfit(t, None)
+    assert n == 3 and chi2[0] == pytest.approx((((e - model_e) / 0.01) ** 2).sum(), rel=1e-9)
+    pair = st.SizeDistribution([40e-6, 90e-6])
+    e2 = st.collide(CO2, pair.radii, 3e-10, 0.08, method="table").e_observed
+    mid = Model(CO2, pair, None, False, 0.01,
+                Data.parse(None, None, (np.array([0.08]), np.array([e2.mean()]), 0.001)),
+                "table", 1e-6, 0.5)
+    assert mid.misfit(t, None)[0][0] == pytest.approx(0.0, abs=1e-12)
+
+
+def test_too_few_restitution_radii_are_warned_of():
+    # the model's own e at the 8 quantile radii of a sample (lognormal, width 0.3, 60 um,
+    # T_vis = 3e-10 s; st.collide) changes by up to 0.2 from one radius to the next at 0.05 m/s
+    # (next to the thresholds of the small grains): coarse against e_err = 0.1, not against 0.3
+    from stickiness._judge import _coarse_restitution
+    from stickiness._likelihood import Data, Model
+
+    sizes = st.SizeDistribution.lognormal(median=R, width=0.3)
+    v = np.array([0.05, 0.07, 0.1])
+    q = (np.arange(8) + 0.5) / 8
+    e = st.collide(CO2, np.array([sizes.quantile(x) for x in q])[:, None], 3e-10, v,
+                   method="table").e_observed
+    step = np.abs(np.diff(e, axis=0)).max()
+    assert 0.1 < step < 0.3
+    for e_err in (0.1, 0.3):
+        data = Data.parse(None, None, (v, np.full(3, 0.5), e_err))
+        model = Model(CO2, sizes, None, False, 0.01, data, "table", 1e-6, 0.5, 8)
+        message = _coarse_restitution(model, (np.array([3e-10]), None))
+        assert (message is not None) == (step > e_err), (e_err, step, message)
+        if message:
+            assert f"up to {step:.2g} (at v_in = " in message and "restitution_nodes" in message
+    with pytest.raises(ValueError, match="restitution_nodes"):
+        st.infer(CO2, sizes, restitution=(v, np.full(3, 0.5), 0.15), restitution_nodes=0)

@@ -56,6 +56,13 @@ def test_infer_example_runs(tmp_path):
     assert (tmp_path / "ice.png").stat().st_size > 10_000
 
 
+def test_infer_prior_example_runs(tmp_path):
+    # short chains: what the docs quote comes from the defaults (docs/model.md)
+    out = run_example("infer_prior.py", "--steps", "100", tmp=tmp_path)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.count("P(T_vis < 1e-10 s)") == 4, out.stdout
+
+
 def test_fit_round_trip_example_runs(tmp_path):
     # synthetic truth: each target V_stick is given back by v_stick at its fitted T_vis, next to
     # the no-bouncing cliff too (before 2026-11-28: 18 % of such fits off by more than 1e-5)

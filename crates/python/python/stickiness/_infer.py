@@ -19,7 +19,7 @@ from . import _args, _core
 from ._args import StickinessWarning
 from ._core import DEFAULT_K, DEFAULT_RADIUS, DEFAULT_REL_TOL
 from ._judge import judged
-from ._likelihood import PARAMETERS, Data, Model, priors as _priors
+from ._likelihood import PARAMETERS, RESTITUTION_NODES, Data, Model, priors as _priors
 from ._posterior import Posterior
 from ._sampler import MIN_WALKERS, integrated_time, sample
 from ._sizes import SizeDistribution
@@ -32,6 +32,8 @@ DEFAULT_STEPS = 2000
 #: At most this many walkers: each step evaluates all of them (an ensemble of 1e5 already costs
 #: seconds a step), and an absurd count is a typo, not a request.
 MAX_WALKERS = 100_000
+#: At most this many restitution radii: each is a collision per walker, datum and step.
+MAX_RESTITUTION_NODES = 1024
 #: emcee's rule of thumb (its documentation, "Autocorrelation analysis"): a chain shorter than
 #: 50 integrated autocorrelation times gives an unreliable estimate of the time itself.
 MIN_AUTOCORR_TIMES = 50.0
@@ -232,6 +234,7 @@ def infer(
     method: str = "table",
     rel_tol: float = DEFAULT_REL_TOL,
     v_stick_quantile: float = 0.5,
+    restitution_nodes: int = RESTITUTION_NODES,
 ) -> Posterior:
     """The posterior of T_vis (and gamma_SV) given measured thresholds, sticking outcomes and
     coefficients of restitution (SI units throughout).
@@ -286,6 +289,11 @@ def infer(
     v_stick_quantile : float, optional
         The quantile of V_stick over a sample's radii a measured threshold stands for (0..1).
         Default 0.5.
+    restitution_nodes : int, optional
+        The equal-weight quantile radii of a ``SizeDistribution`` over which each coefficient
+        of restitution is mixed (1-1024, at most the sample's own radii, which it then uses; a
+        collision for each per walker and datum). Default 8; warned of where e changes by more
+        than its sigma from one radius to the next.
 
     Returns
     -------
@@ -309,7 +317,9 @@ def infer(
         a bound of its prior (the data then set only a one-sided limit there; the prior sets
         the other end); Gaussian data (a threshold, coefficients of restitution) more than 3
         sigma (of their chi^2) from the model at the chain's best point (not fitted within the
-        priors: a unit or a prior to check).
+        priors: a unit or a prior to check); for a ``SizeDistribution``, e changing by more
+        than a datum's sigma between neighbouring restitution radii (raise
+        ``restitution_nodes``).
 
     Notes
     -----
@@ -372,7 +382,8 @@ def infer(
     data = Data.parse(v_stick, sticking, restitution)
     _contradiction(sizes, data)
     # checks k, rel_tol and the geometry once, with the core's messages
-    model = Model(material, sizes, radius2, wall, k, data, method, rel_tol, quantile)
+    nodes = _count("restitution_nodes", restitution_nodes, 1, MAX_RESTITUTION_NODES)
+    model = Model(material, sizes, radius2, wall, k, data, method, rel_tol, quantile, nodes)
     model.v_stick(np.array([DEFAULT_T_VIS_CHECK]), None)
 
     lo = np.log10([bounds[p][0] for p in free])

@@ -15,10 +15,11 @@ from ._likelihood import PARAMETERS, Model
 #: prior is uniform) at one end is bounded there by the prior, not by the data: a flat
 #: posterior puts 5 % of its samples in each such share, one the data confine puts none.
 PRIOR_EDGE = 0.05
-#: The Gaussian data (threshold, coefficients of restitution) at the chain's best point more
-#: than this many standard deviations (of chi^2 with their number of degrees of freedom, by
-#: the Wilson-Hilferty transform) from the model: they are not fitted within the priors
-#: (p < 1.3e-3 for data the model made).
+#: The Gaussian data (threshold, coefficients of restitution; each of these by its probability
+#: integral transform under the mixture over the sample's radii, ``Model.misfit``) at the
+#: chain's best point more than this many standard deviations (of chi^2 with their number of
+#: degrees of freedom, by the Wilson-Hilferty transform) from the model: they are not fitted
+#: within the priors (p < 1.3e-3 for data the model made).
 MISFIT_SIGMAS = 3.0
 
 
@@ -74,7 +75,38 @@ def judged(
             f"{MISFIT_SIGMAS:g} sigma); check their units (m/s) and the priors: the posterior "
             f"follows the priors' bounds, not the data"
         )
+    coarse = _coarse_restitution(model, model_args(10.0 ** best[None, :]))
+    if coarse:
+        out.append(coarse)
     return out
+
+
+def _coarse_restitution(
+    model: Model, args: Tuple[np.ndarray, Optional[np.ndarray]]
+) -> Optional[str]:
+    """Where the sample's restitution radii are too few for the data: e at the chain's best
+    point changes between neighbouring radii by more than a datum's sigma, so the mixture over
+    them is lumpy on the scale the data resolve (a posterior too narrow or shifted)."""
+    if model.data.restitution is None or model.e_weights.size < 2:
+        return None
+    v, _, e_err = model.data.restitution
+    step = np.abs(np.diff(model.e_observed(*args)[0], axis=0)).max(axis=0)
+    worst = int(np.argmax(step / e_err))
+    if step[worst] <= e_err[worst]:
+        return None
+    n, radii = model.e_weights.size, len(model.sizes)
+    more = (
+        f"raise restitution_nodes (at most the sample's {radii} radii; a collision each per "
+        f"walker, datum and step)" if n < radii else
+        f"give the sample more radii (SizeDistribution.lognormal(..., nodes=N)) and raise "
+        f"restitution_nodes with them"
+    )
+    return (
+        f"the sample's {n} restitution radii resolve e only in steps of up to "
+        f"{step[worst]:.2g} (at v_in = {v[worst]:.3g} m/s), more than its e_err = "
+        f"{e_err[worst]:.2g}: the mixture over them is too coarse for data this precise, and the "
+        f"posterior may be too narrow or shifted; {more}"
+    )
 
 
 def _chi2_sigmas(chi2: float, n: int) -> float:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from statistics import NormalDist
 from typing import Any, Dict, Optional, Sequence, Tuple
 
 import numpy as np
@@ -41,8 +42,10 @@ V_MAX_MARGIN = 2.0
 #: its nodes at the same value.
 C_A_MAX = 1e8
 #: A polydisperse sample enters each restitution point through this many equal-weight quantile
-#: radii (a collision for each per walker and point: the cost of e is what limits the
-#: quadrature; the thresholds use every radius of the sample).
+#: radii by default (a collision for each per walker and point: the cost of e is what limits the
+#: quadrature; the thresholds use every radius of the sample). Coarse where e changes by more
+#: than its measured sigma from one radius to the next (:func:`stickiness.infer` warns then:
+#: ``restitution_nodes``).
 RESTITUTION_NODES = 8
 
 
@@ -198,6 +201,7 @@ class Model:
         method: str,
         rel_tol: float,
         v_stick_quantile: float,
+        restitution_nodes: int = RESTITUTION_NODES,
     ) -> None:
         self.material = material
         self.sizes = sizes
@@ -213,7 +217,7 @@ class Model:
         self.v_max = data.fastest() or None
         self.outcomes = None if data.sticking is None else Outcomes(*data.sticking, sizes.weights)
         self._fixed_by_walkers: Dict[int, Tuple[np.ndarray, Optional[np.ndarray], np.ndarray]] = {}
-        nodes = min(RESTITUTION_NODES, len(sizes))
+        nodes = min(restitution_nodes, len(sizes))
         if nodes == len(sizes):
             self.e_radii, self.e_weights = sizes.radii, sizes.weights
         else:
@@ -301,18 +305,21 @@ class Model:
         return total
 
     def misfit(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> Tuple[np.ndarray, int]:
-        """chi^2 of the Gaussian data (the threshold and the coefficients of restitution, each
-        of those at the radius of the sample that fits it best) for each walker, and their
-        number (0: sticking outcomes alone, chi^2 0)."""
+        """chi^2 of the Gaussian data for each walker, and their number (0: sticking outcomes
+        alone, chi^2 0): the threshold's z^2, and for each coefficient of restitution the z^2
+        of its probability integral transform under the mixture over the sample's radii, z =
+        Phi^-1(sum_r w_r Phi((e - e_r) / sigma)), which is (e - e_model) / sigma for one radius
+        and a standard normal deviate for data the model made whatever the sample."""
         chi2 = np.zeros(t_vis.size)
         n = 0
         if self.data.v_stick is not None:
             chi2 += self._threshold_z(self.v_stick(t_vis, gamma_sv)) ** 2
             n += 1
         if self.data.restitution is not None:
-            z = self._restitution_ln(t_vis, gamma_sv)
-            chi2 += -2.0 * z.max(axis=1).sum(axis=1)
-            n += z.shape[2]
+            _, e, e_err = self.data.restitution
+            r = (e[None, None, :] - self.e_observed(t_vis, gamma_sv)) / e_err
+            chi2 += (_mixture_deviate(r, self.e_weights) ** 2).sum(axis=1)
+            n += e.size
         return chi2, n
 
     def _threshold_z(self, vs: np.ndarray) -> np.ndarray:
@@ -331,6 +338,21 @@ class Model:
         _, e, e_err = self.data.restitution
         model = self.e_observed(t_vis, gamma_sv)
         return -0.5 * ((model - e[None, None, :]) / e_err) ** 2
+
+
+def _mixture_deviate(r: np.ndarray, weights: np.ndarray) -> np.ndarray:
+    """Phi^-1(sum_r w_r Phi(r)) over axis 1 of ``r`` (walkers, nodes, points), each tail from
+    its own side so that neither rounds to 0 or 1 (``erfc``), clipped at 1e-300 (38 sigma)."""
+    erfc = np.vectorize(math.erfc, otypes=[float])
+    lower = np.einsum("wnp,n->wp", 0.5 * erfc(-r / math.sqrt(2.0)), weights)
+    upper = np.einsum("wnp,n->wp", 0.5 * erfc(r / math.sqrt(2.0)), weights)
+    inv = np.vectorize(NormalDist().inv_cdf, otypes=[float])
+    # each branch is used where its tail is the smaller one (at most 1/2); both are evaluated
+    return np.where(
+        lower < upper,
+        inv(np.clip(lower, 1e-300, 0.5)),
+        -inv(np.clip(upper, 1e-300, 0.5)),
+    )
 
 
 class Outcomes:
