@@ -1,6 +1,7 @@
 """What a user should know before citing a posterior of :func:`stickiness.infer`: where it is
-the prior's rather than the data's (a 95 % interval reaching a bound of its prior), and data the
-model does not fit within the priors (a unit slip, a threshold below V_stick,JKR)."""
+the prior's rather than the data's (a 95 % interval reaching a bound of its prior), data the
+model does not fit within the priors (a unit slip, a threshold below V_stick,JKR), and a mixture
+over a sample's radii too coarse for the restitution data."""
 
 from __future__ import annotations
 
@@ -34,8 +35,9 @@ def judged(
     model_args: Callable[[np.ndarray], Tuple[np.ndarray, Optional[np.ndarray]]],
 ) -> List[str]:
     """What a user should know before citing the posterior: each parameter whose 95 % interval
-    reaches a bound of its prior (:data:`PRIOR_EDGE`), and Gaussian data the chain's best point
-    leaves more than :data:`MISFIT_SIGMAS` from the model. ``chain`` (steps, walkers, free) is
+    reaches a bound of its prior (:data:`PRIOR_EDGE`), Gaussian data the chain's best point
+    leaves more than :data:`MISFIT_SIGMAS` from the model, and restitution radii too few for
+    the data (``_coarse_restitution``). ``chain`` (steps, walkers, free) is
     in log10 of the parameters, ``log_prob`` (steps, walkers) its ln-likelihood."""
     out: List[str] = []
     after = chain[burn:].reshape(-1, len(free))
