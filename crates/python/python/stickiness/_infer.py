@@ -116,14 +116,15 @@ def _sizes(radius: Any) -> SizeDistribution:
 
 def _contradiction(sizes: SizeDistribution, data: Data) -> None:
     """One radius: a collision that stuck faster than one that bounced has probability 0."""
-    if len(sizes) != 1 or data.sticking is None:
+    if len(sizes) != 1 or data.sticking is None or data.sticking_err is not None:
         return
     v, stuck = data.sticking
     if stuck.any() and (~stuck).any() and v[stuck].max() >= v[~stuck].min():
         raise ValueError(
             f"sticking: a collision stuck at {v[stuck].max():g} m/s and one bounced at "
             f"{v[~stuck].min():g} m/s; for one radius the model sticks below V_stick and "
-            f"bounces above it (give a SizeDistribution as radius for a polydisperse sample)"
+            f"bounces above it (give the speeds' errors as a third column, (v_in, stuck, "
+            f"v_in_err), or a SizeDistribution as radius for a polydisperse sample)"
         )
 
 
@@ -249,8 +250,10 @@ def infer(
         A measured sticking threshold and its 1-sigma (m/s); Gaussian. For a sample of sizes it
         is compared with the ``v_stick_quantile`` (default: the median) of V_stick over the
         radii.
-    sticking : (array_like, array_like of bool), optional
-        Individual collisions, a tuple of columns: impact speeds (m/s) and whether each stuck. P(stuck | v) is the
+    sticking : (array_like, array_like of bool[, array_like]), optional
+        Individual collisions, a tuple of columns: impact speeds (m/s), whether each stuck, and
+        optionally each speed's 1-sigma (m/s, one for all or one each; Gaussian; needs scipy):
+        then P(stuck | v) is the chance that the true speed lay below V_stick. P(stuck | v) is the
         weight of the radii with v < V_stick(R).
     restitution : (array_like, array_like, array_like), optional
         Bouncing collisions, a tuple of columns: impact speeds (m/s), measured e and its

@@ -49,7 +49,7 @@ C_A_MAX = 1e8
 RESTITUTION_NODES = 8
 
 
-def _columns(name: str, value: Any, names: str) -> None:
+def _columns(name: str, value: Any, names: str, or_also: str = "") -> None:
     """``value`` is a tuple of ``len(names.split(', '))`` columns ``(names)``, else a
     ``ValueError`` naming ``name`` (a list is refused: a list of rows, one collision a row,
     would be read as columns when there are as many rows as columns)."""
@@ -69,7 +69,10 @@ def _columns(name: str, value: Any, names: str) -> None:
         got = f"a tuple of length {len(value)}"
     else:
         got = type(value).__name__
-    raise ValueError(f"{name}: expected a tuple ({names}) of {n} arrays, one a column; got {got}")
+    also = f" (or {or_also})" if or_also else ""
+    raise ValueError(
+        f"{name}: expected a tuple ({names}) of {n} arrays{also}, one a column; got {got}"
+    )
 
 
 def _pair(name: str, value: Any) -> Tuple[np.ndarray, ...]:
@@ -103,6 +106,8 @@ class Data:
     sticking: Optional[Tuple[np.ndarray, np.ndarray]]
     #: Speeds (m/s), e and its 1-sigma of bouncing collisions, or None.
     restitution: Optional[Tuple[np.ndarray, np.ndarray, np.ndarray]]
+    #: The 1-sigma of each sticking outcome's speed (m/s), or None: exact speeds.
+    sticking_err: Optional[np.ndarray] = None
 
     @classmethod
     def parse(cls, v_stick: Any, sticking: Any, restitution: Any) -> "Data":
@@ -119,9 +124,13 @@ class Data:
             if not (math.isfinite(sigma) and sigma > 0):
                 raise ValueError(f"v_stick: sigma = {_args.shown(sigma)}: must be > 0 and finite (m/s)")
             threshold = (value, sigma)
-        outcomes = None
+        outcomes = v_err = None
         if sticking is not None:
-            _columns("sticking", sticking, "v_in, stuck")
+            if isinstance(sticking, tuple) and len(sticking) == 3:
+                # the optional third column: each speed's 1-sigma
+                v_err = np.atleast_1d(_args.float_array("sticking", _args.si("v_in", sticking[2])))
+                sticking = sticking[:2]
+            _columns("sticking", sticking, "v_in, stuck", or_also="(v_in, stuck, v_in_err)")
             v = np.atleast_1d(_args.float_array("sticking", _args.si("v_in", sticking[0])))
             stuck = np.atleast_1d(np.asarray(sticking[1]))
             # empty arrays (float64 by default) are named as such by the shape check below
@@ -135,6 +144,16 @@ class Data:
                 )
             _check("sticking", "v_in", v, np.isfinite(v) & (v > 0), "> 0 and finite (m/s)")
             outcomes = (v.astype(float), stuck.astype(bool))
+            if v_err is not None:
+                if v_err.shape == (1,):
+                    v_err = np.full(v.shape, v_err[0])
+                if v_err.shape != v.shape:
+                    raise ValueError(
+                        f"sticking: v_in_err must be one number or one a speed, got shape "
+                        f"{v_err.shape} for {v.size} speeds"
+                    )
+                _check("sticking", "v_in_err", v_err, np.isfinite(v_err) & (v_err > 0),
+                       "> 0 and finite (m/s)")
         bounces = None
         if restitution is not None:
             _columns("restitution", restitution, "v_in, e, e_err")
@@ -146,7 +165,7 @@ class Data:
                    "negative, its e_observed 0)")
             _check("restitution", "e_err", e_err, np.isfinite(e_err) & (e_err > 0), "> 0 and finite")
             bounces = (v, e, e_err)
-        return cls(threshold, outcomes, bounces)
+        return cls(threshold, outcomes, bounces, v_err)
 
     def fastest(self) -> float:
         """The highest speed (m/s) the threshold data need V_stick up to."""
@@ -155,6 +174,8 @@ class Data:
             speeds.append(self.v_stick[0] + V_MAX_SIGMAS * self.v_stick[1])
         if self.sticking is not None:
             speeds.append(V_MAX_MARGIN * float(self.sticking[0].max()))
+            if self.sticking_err is not None:
+                speeds.append(float((self.sticking[0] + V_MAX_SIGMAS * self.sticking_err).max()))
         return max(speeds)
 
 
@@ -215,7 +236,9 @@ class Model:
         # the thresholds are searched up to the fastest speed the data need (None: only
         # restitution data, no threshold needed)
         self.v_max = data.fastest() or None
-        self.outcomes = None if data.sticking is None else Outcomes(*data.sticking, sizes.weights)
+        self.outcomes = None if data.sticking is None else Outcomes(
+            *data.sticking, sizes.weights, data.sticking_err
+        )
         self._fixed_by_walkers: Dict[int, Tuple[np.ndarray, Optional[np.ndarray], np.ndarray]] = {}
         nodes = min(restitution_nodes, len(sizes))
         if nodes == len(sizes):
@@ -361,12 +384,17 @@ class Outcomes:
     order, the walkers' offsets and weights of each number of walkers kept (a sampler asks with
     the same few shapes thousands of times)."""
 
-    def __init__(self, v: np.ndarray, stuck: np.ndarray, weights: np.ndarray) -> None:
+    def __init__(self, v: np.ndarray, stuck: np.ndarray, weights: np.ndarray,
+                 v_err: Optional[np.ndarray] = None) -> None:
         self.order = np.argsort(v, kind="stable")
         self.sorted_v = v[self.order]
         self.stuck = stuck[self.order]
         self.weights = weights
         self._shaped: Dict[int, Tuple[np.ndarray, np.ndarray]] = {}
+        # with speed errors: the speeds' sigmas, in the speeds' order
+        self.v_err = None if v_err is None else v_err[self.order]
+        if self.v_err is not None:
+            _phi()  # scipy, or an ImportError saying how to get it, before the chain
 
     def sorted_probability(self, v_stick: np.ndarray) -> np.ndarray:
         """P(stuck | v): for each walker (row of ``v_stick``, its V_stick at each radius, m/s)
@@ -398,10 +426,35 @@ class Outcomes:
 
     def log_likelihood(self, v_stick: np.ndarray) -> np.ndarray:
         """ln L of the outcomes for each walker: the sum of ln P(stuck | v) over the collisions
-        that stuck and ln(1 - P) over those that bounced (``-inf`` where one is impossible)."""
+        that stuck and ln(1 - P) over those that bounced (``-inf`` where one is impossible).
+        With speed errors s: P(stuck | v) = sum_i w_i Phi((V_stick(R_i) - v) / s), the chance
+        that the true speed lay below V_stick (Gaussian), 1 - P from the other tail of each
+        term."""
+        if self.v_err is not None:
+            sign = np.where(self.stuck, 1.0, -1.0)
+            z = sign * (v_stick[:, :, None] - self.sorted_v[None, None, :]) / self.v_err
+            log_ndtr, ndtr = _phi()
+            if self.weights.size == 1:
+                return log_ndtr(z[:, 0, :]).sum(axis=1)
+            # a mixture: Phi itself (half log_ndtr's cost), each outcome's own tail so that
+            # nothing above 38 sigma rounds to 0
+            with np.errstate(divide="ignore"):
+                return np.log(np.einsum("wrs,r->ws", ndtr(z), self.weights)).sum(axis=1)
         p = self.sorted_probability(v_stick)
         with np.errstate(divide="ignore"):
             return np.log(np.where(self.stuck, p, 1.0 - p)).sum(axis=1)
+
+
+def _phi() -> Tuple[Any, Any]:
+    """``scipy.special``'s ``log_ndtr`` and ``ndtr``, ln Phi and Phi (the likelihood of sticking
+    outcomes with speed errors), or an ``ImportError`` saying how to get them."""
+    try:
+        from scipy.special import log_ndtr, ndtr  # type: ignore[import-untyped,unused-ignore]
+    except ImportError:
+        raise ImportError(
+            "sticking outcomes with speed errors need scipy: pip install 'stickiness[infer]'"
+        ) from None
+    return log_ndtr, ndtr
 
 
 def stuck_probability(v_stick: np.ndarray, weights: np.ndarray, v: np.ndarray) -> np.ndarray:
