@@ -45,6 +45,7 @@ pub const PYTHON_TEST_REQUIREMENTS: &[&str] = &[
     "emcee>=3.1",
     "corner>=2.2",
     "tqdm>=4.0",
+    "scipy>=1.8",
     "nbclient>=0.7",
     "nbformat>=5.7",
     "ipykernel>=6.0",

@@ -20,7 +20,9 @@ pub const PLAUSIBLE_SPEED_MAX: f64 = 1e3;
 /// in erg/cm^2 (cgs: 80 for CO2's 0.08) is the likeliest slip.
 pub const PLAUSIBLE_GAMMA_SV: (f64, f64) = (1e-3, 5.0);
 /// Plausible Young's moduli E (Pa): 10 MPa (soft polymers) to 1.2 TPa (diamond). Ices lie at
-/// 1e9-1e10 Pa (Section 3); a value in GPa (10.7 for CO2) is the likeliest slip.
+/// 1e9-1e10 Pa (Section 3); a value in GPa (10.7 for CO2) is the likeliest slip. A value in
+/// dyn/cm^2 (ten times the Pa value: 1.07e11 for CO2) lies within the range of stiff solids
+/// (silicates, iron: 1e11-2e11 Pa) and is not caught.
 pub const PLAUSIBLE_YOUNG: (f64, f64) = (1e7, 1.2e12);
 /// Plausible material densities rho (kg/m^3) of a grain's material: 100 (below any solid but
 /// aerogels) to 25 000 (above osmium's 22 600). Ices lie near 1000-1600; a value in g/cm^3
@@ -50,7 +52,7 @@ const MATERIAL_CHECKS: [Check; 3] = [
         field: "young",
         unit: "Pa",
         range: PLAUSIBLE_YOUNG,
-        slips: &[(1e9, "GPa"), (1e6, "MPa"), (0.1, "dyn/cm^2")],
+        slips: &[(1e9, "GPa"), (1e6, "MPa")],
     },
     Check {
         field: "density",

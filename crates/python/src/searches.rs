@@ -120,7 +120,8 @@ elementwise! {
                 .map(|f| {
                     let kind = match f {
                         FitWarning::AboveDefaultSearchLimit { .. } => "fit_v_max",
-                        FitWarning::AtJkrLimit { .. } | FitWarning::LowerEndAtJkr { .. } => "fit_jkr",
+                        FitWarning::AtJkrLimit { .. } => "fit_t_vis_zero",
+                        FitWarning::LowerEndAtJkr { .. } => "fit_jkr",
                     };
                     (i, kind, f.message_for("v_max="))
                 })

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 import warnings
-from typing import Any, Callable, Dict, Optional, Sequence, Tuple
+from typing import Any, Callable, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -219,7 +219,7 @@ def infer(
     radius: Any = DEFAULT_RADIUS,
     *,
     v_stick: Optional[Tuple[Any, Any]] = None,
-    sticking: Optional[Tuple[Any, Any]] = None,
+    sticking: Optional[Union[Tuple[Any, Any], Tuple[Any, Any, Any]]] = None,
     restitution: Optional[Tuple[Any, Any, Any]] = None,
     free: Sequence[str] = ("t_vis",),
     priors: Optional[Dict[str, Tuple[float, float]]] = None,
@@ -252,15 +252,16 @@ def infer(
         radii.
     sticking : (array_like, array_like of bool[, array_like]), optional
         Individual collisions, a tuple of columns: impact speeds (m/s), whether each stuck, and
-        optionally each speed's 1-sigma (m/s, one for all or one each; Gaussian; needs scipy):
-        then P(stuck | v) is the chance that the true speed lay below V_stick. P(stuck | v) is the
-        weight of the radii with v < V_stick(R).
+        optionally each speed's 1-sigma (m/s, one for all or one each; Gaussian; needs scipy).
+        With exact speeds P(stuck | v) is the weight of the radii with v < V_stick(R); with
+        speed errors, the chance that the true speed lay below V_stick, so that outcomes of one
+        radius may overlap.
     restitution : (array_like, array_like, array_like), optional
         Bouncing collisions, a tuple of columns: impact speeds (m/s), measured e and its
         1-sigma (one for all or one each); Gaussian. The
         model's e comes from the collision itself; a collision that sticks or hits twice is
-        observed as e = 0 (Section 4.4). For a sample of sizes e is a mixture over 8 quantile
-        radii.
+        observed as e = 0 (Section 4.4). For a sample of sizes e is a mixture over
+        ``restitution_nodes`` (default 8) quantile radii.
     free : sequence of {'t_vis', 'gamma_sv'}, optional
         The parameters to infer. Default ``('t_vis',)``.
     priors : dict, optional
@@ -319,10 +320,10 @@ def infer(
         A chain (after burn-in) shorter than 50 autocorrelation times; a 95 % interval reaching
         a bound of its prior (the data then set only a one-sided limit there; the prior sets
         the other end); Gaussian data (a threshold, coefficients of restitution) more than 3
-        sigma (of their chi^2) from the model at the chain's best point (not fitted within the
-        priors: a unit or a prior to check); for a ``SizeDistribution``, e changing by more
-        than a datum's sigma between neighbouring restitution radii (raise
-        ``restitution_nodes``).
+        sigma (of their chi^2) from the model at the chain's best point, or a sticking outcome
+        with probability below 1e-6 there (not fitted: a unit, a prior, or data sets that
+        disagree); for a ``SizeDistribution``, e changing by more than a datum's sigma between
+        neighbouring restitution radii (raise ``restitution_nodes``).
 
     Notes
     -----

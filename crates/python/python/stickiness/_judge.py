@@ -22,6 +22,9 @@ PRIOR_EDGE = 0.05
 #: degrees of freedom, by the Wilson-Hilferty transform) from the model: they are not fitted
 #: within the priors (p < 1.3e-3 for data the model made).
 MISFIT_SIGMAS = 3.0
+#: A sticking outcome whose probability at the chain's best point is below this is not fitted:
+#: about 5 sigma of a Gaussian's one tail (a speed error larger than given, a mislabel).
+OUTCOME_P_MIN = 1e-6
 
 
 def judged(
@@ -61,23 +64,43 @@ def judged(
                 f"not the data's; the data set {limit}, or widen priors={{'{p}': (lo, hi)}}"
             )
     best = chain.reshape(-1, len(free))[int(np.argmax(log_prob))]
-    chi2, n = model.misfit(*model_args(10.0 ** best[None, :]))
+    args = model_args(10.0 ** best[None, :])
+    point = ", ".join(f"{p} = {10.0 ** best[i]:.3g} {PARAMETERS[p]}" for i, p in enumerate(free))
+    # where the best point lies at a prior's bound, the priors hold the posterior there
+    at_bound = bool(np.any(((best - lo) / (hi - lo) < PRIOR_EDGE)
+                           | ((best - lo) / (hi - lo) > 1.0 - PRIOR_EDGE)))
+    why = (
+        "check their units (m/s) and the priors: the posterior follows the priors' bounds, not "
+        "the data" if at_bound else
+        "the data sets may disagree with each other, or with the model as set up (a unit, k, "
+        "the geometry, a size distribution)"
+    )
+    chi2, n = model.misfit(*args)
     if n and _chi2_sigmas(float(chi2[0]), n) > MISFIT_SIGMAS:
-        point = ", ".join(f"{p} = {10.0 ** best[i]:.3g} {PARAMETERS[p]}" for i, p in enumerate(free))
-        what = " and ".join(
-            w for w, given in (
-                ("the measured threshold", model.data.v_stick is not None),
-                ("the coefficients of restitution", model.data.restitution is not None),
-            ) if given
-        )
+        kinds = [w for w, given in (
+            ("the measured threshold", model.data.v_stick is not None),
+            ("the coefficients of restitution", model.data.restitution is not None),
+        ) if given]
+        verb = "lies" if kinds == ["the measured threshold"] else "lie"
         values = "1 value" if n == 1 else f"{n} values"
         out.append(
-            f"the data are not fitted within the priors: at the chain's best point ({point}) "
-            f"{what} lie chi^2 = {float(chi2[0]):.3g} from the model ({values}, more than "
-            f"{MISFIT_SIGMAS:g} sigma); check their units (m/s) and the priors: the posterior "
-            f"follows the priors' bounds, not the data"
+            f"the data are not fitted: at the chain's best point ({point}) {' and '.join(kinds)} "
+            f"{verb} chi^2 = {float(chi2[0]):.3g} from the model ({values}, more than "
+            f"{MISFIT_SIGMAS:g} sigma); {why}"
         )
-    coarse = _coarse_restitution(model, model_args(10.0 ** best[None, :]))
+    if model.outcomes is not None:
+        lp = model.outcomes.log_observed(model.v_stick(*args))[0]
+        worst = int(np.argmin(lp))
+        if lp[worst] < math.log(OUTCOME_P_MIN):
+            o = model.outcomes
+            v, stuck = o.sorted_v[worst], bool(o.stuck[worst])
+            out.append(
+                f"the data are not fitted: at the chain's best point ({point}) the collision "
+                f"that {'stuck' if stuck else 'bounced'} at {v:.4g} m/s has probability "
+                f"{math.exp(lp[worst]):.2g} (the least of the sticking outcomes'; a mislabel, a "
+                f"speed error larger than given, or a unit); {why}"
+            )
+    coarse = _coarse_restitution(model, args)
     if coarse:
         out.append(coarse)
     return out
@@ -88,11 +111,17 @@ def _coarse_restitution(
 ) -> Optional[str]:
     """Where the sample's restitution radii are too few for the data: e at the chain's best
     point changes between neighbouring radii by more than a datum's sigma, so the mixture over
-    them is lumpy on the scale the data resolve (a posterior too narrow or shifted)."""
-    if model.data.restitution is None or model.e_weights.size < 2:
+    them is lumpy on the scale the data resolve (a posterior too narrow or shifted). One radius
+    standing for several is compared with the sample's quartile radii."""
+    if model.data.restitution is None or len(model.sizes) < 2:
         return None
     v, _, e_err = model.data.restitution
-    step = np.abs(np.diff(model.e_observed(*args)[0], axis=0)).max(axis=0)
+    if model.e_weights.size == 1:
+        quartiles = np.array([model.sizes.quantile(q) for q in (0.25, 0.5, 0.75)])
+        e = model.e_observed(*args, radii=quartiles)[0]
+    else:
+        e = model.e_observed(*args)[0]
+    step = np.abs(np.diff(e, axis=0)).max(axis=0)
     worst = int(np.argmax(step / e_err))
     if step[worst] <= e_err[worst]:
         return None
@@ -104,10 +133,10 @@ def _coarse_restitution(
         f"restitution_nodes with them"
     )
     return (
-        f"the sample's {n} restitution radii resolve e only in steps of up to "
-        f"{step[worst]:.2g} (at v_in = {v[worst]:.3g} m/s), more than its e_err = "
-        f"{e_err[worst]:.2g}: the mixture over them is too coarse for data this precise, and the "
-        f"posterior may be too narrow or shifted; {more}"
+        f"the sample's {n} restitution radi{'us' if n == 1 else 'i'} resolve"
+        f"{'s' if n == 1 else ''} e only in steps of up to {step[worst]:.2g} (at v_in = "
+        f"{v[worst]:.3g} m/s), more than its e_err = {e_err[worst]:.2g}: the mixture over them is "
+        f"too coarse for data this precise, and the posterior may be too narrow or shifted; {more}"
     )
 
 

@@ -128,13 +128,15 @@ class Data:
         if sticking is not None:
             if isinstance(sticking, tuple) and len(sticking) == 3:
                 # the optional third column: each speed's 1-sigma
-                v_err = np.atleast_1d(_args.float_array("sticking", _args.si("v_in", sticking[2])))
+                v_err = np.atleast_1d(
+                    _args.float_array("sticking: v_in_err", _args.si("v_in_err", sticking[2]))
+                )
                 sticking = sticking[:2]
             _columns("sticking", sticking, "v_in, stuck", or_also="(v_in, stuck, v_in_err)")
             v = np.atleast_1d(_args.float_array("sticking", _args.si("v_in", sticking[0])))
             stuck = np.atleast_1d(np.asarray(sticking[1]))
             # empty arrays (float64 by default) are named as such by the shape check below
-            kind_ok = stuck.size == 0 or stuck.dtype.kind in "biu"
+            kind_ok = stuck.size == 0 or stuck.dtype.kind in "biuf"
             if not kind_ok or not np.all((stuck == 0) | (stuck == 1)):
                 raise ValueError("sticking: stuck must be booleans (or 0/1)")
             if v.ndim != 1 or v.shape != stuck.shape or v.size == 0:
@@ -287,14 +289,15 @@ class Model:
             ))
         return fixed
 
-    def e_observed(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
+    def e_observed(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray],
+                   radii: Optional[np.ndarray] = None) -> np.ndarray:
         """The observed e (0 for sticking and double collisions, Section 4.4) of shape
         (walkers, restitution nodes, speeds): one core call for every walker, radius and speed,
         answered by the restitution tables where they vouch (``method='table'``), by the ODE
         elsewhere."""
         assert self.data.restitution is not None
         v = self.data.restitution[0]
-        radii = self.e_radii
+        radii = self.e_radii if radii is None else radii
         n, r, s = t_vis.size, radii.size, v.size
         rad = np.tile(np.repeat(radii, s), n)
         g = None if gamma_sv is None else np.repeat(gamma_sv, r * s)
@@ -426,23 +429,33 @@ class Outcomes:
 
     def log_likelihood(self, v_stick: np.ndarray) -> np.ndarray:
         """ln L of the outcomes for each walker: the sum of ln P(stuck | v) over the collisions
-        that stuck and ln(1 - P) over those that bounced (``-inf`` where one is impossible).
-        With speed errors s: P(stuck | v) = sum_i w_i Phi((V_stick(R_i) - v) / s), the chance
-        that the true speed lay below V_stick (Gaussian), 1 - P from the other tail of each
-        term."""
+        that stuck and ln(1 - P) over those that bounced (``-inf`` where one is impossible)."""
+        return self.log_observed(v_stick).sum(axis=1)
+
+    def log_observed(self, v_stick: np.ndarray) -> np.ndarray:
+        """ln P of each observed outcome (walkers, speeds in sorted order). With speed errors s:
+        P(stuck | v) = sum_i w_i Phi((V_stick(R_i) - v) / s), the chance that the true speed
+        lay below V_stick (Gaussian), and 1 - P from each term's other tail; a mixture takes Phi
+        itself (half log_ndtr's cost) and logs only where that underflows (beyond 38 sigma)."""
         if self.v_err is not None:
             sign = np.where(self.stuck, 1.0, -1.0)
             z = sign * (v_stick[:, :, None] - self.sorted_v[None, None, :]) / self.v_err
             log_ndtr, ndtr = _phi()
             if self.weights.size == 1:
-                return log_ndtr(z[:, 0, :]).sum(axis=1)
-            # a mixture: Phi itself (half log_ndtr's cost), each outcome's own tail so that
-            # nothing above 38 sigma rounds to 0
+                return np.asarray(log_ndtr(z[:, 0, :]))
+            p = np.einsum("wrs,r->ws", ndtr(z), self.weights)
             with np.errstate(divide="ignore"):
-                return np.log(np.einsum("wrs,r->ws", ndtr(z), self.weights)).sum(axis=1)
+                out = np.log(p)
+            tiny = p == 0.0
+            if tiny.any():
+                w, j = np.nonzero(tiny)
+                terms = log_ndtr(z[w, :, j]) + np.log(self.weights)
+                top = terms.max(axis=1)
+                out[w, j] = top + np.log(np.exp(terms - top[:, None]).sum(axis=1))
+            return out
         p = self.sorted_probability(v_stick)
         with np.errstate(divide="ignore"):
-            return np.log(np.where(self.stuck, p, 1.0 - p)).sum(axis=1)
+            return np.log(np.where(self.stuck, p, 1.0 - p))
 
 
 def _phi() -> Tuple[Any, Any]:
