@@ -76,3 +76,18 @@ def test_outcomes_whose_speeds_overlap_give_back_the_truth():
 def test_bad_speed_errors_name_the_column(err, match):
     with pytest.raises(ValueError, match=match):
         st.infer(CO2, R, sticking=([0.02, 0.03], [True, False], err))
+
+
+def test_speed_errors_take_quantities():
+    # astropy quantities in any speed unit: 2 mm/s is 0.002 m/s (the same chain), a length is
+    # named as the column's wrong unit
+    u = pytest.importorskip("astropy.units")
+    v, stuck = np.array([0.02, 0.03]), np.array([True, False])
+    kw = dict(walkers=8, steps=20, seed=1)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", st.StickinessWarning)
+        a = st.infer(CO2, R, sticking=(v, stuck, 2 * u.mm / u.s), **kw)
+        b = st.infer(CO2, R, sticking=(v, stuck, 0.002), **kw)
+    np.testing.assert_array_equal(a.chain, b.chain)
+    with pytest.raises(ValueError, match="v_in_err: expected a quantity in m/s"):
+        st.infer(CO2, R, sticking=(v, stuck, 2 * u.mm))

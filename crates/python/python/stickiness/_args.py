@@ -31,6 +31,7 @@ UNITS: Dict[str, str] = {
     "t_vis": "s",
     "t_end": "s",
     "v_in": "m/s",
+    "v_in_err": "m/s",
     "v_stick": "m/s",
     "v_stick_err": "m/s",
     "v_max": "m/s",
