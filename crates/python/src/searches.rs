@@ -109,6 +109,15 @@ const FIT: [Column<TVisFit>; 4] = [
     ("v_stick_jkr", |f| Some(f.v_stick_jkr)),
 ];
 
+/// The Python warning kind of a fit's warning: one `StickinessWarning` per kind and call.
+fn fit_kind(f: &FitWarning) -> &'static str {
+    match f {
+        FitWarning::AboveDefaultSearchLimit { .. } => "fit_v_max",
+        FitWarning::AtJkrLimit { .. } => "fit_t_vis_zero",
+        FitWarning::LowerEndAtJkr { .. } => "fit_jkr",
+    }
+}
+
 elementwise! {
     /// T_vis (s) reproducing a measured V_stick, with the range for its uncertainty.
     fn fit_t_vis(py, e: Elements[v_stick, v_stick_err; k; gamma_sv], opts: SearchOptions) {
@@ -117,14 +126,7 @@ elementwise! {
             let w = fit
                 .warnings()
                 .iter()
-                .map(|f| {
-                    let kind = match f {
-                        FitWarning::AboveDefaultSearchLimit { .. } => "fit_v_max",
-                        FitWarning::AtJkrLimit { .. } => "fit_t_vis_zero",
-                        FitWarning::LowerEndAtJkr { .. } => "fit_jkr",
-                    };
-                    (i, kind, f.message_for("v_max="))
-                })
+                .map(|f| (i, fit_kind(f), f.message_for("v_max=")))
                 .collect();
             Ok((fit, w))
         })
