@@ -113,8 +113,8 @@ def test_too_few_restitution_radii_are_warned_of():
 
 def test_data_that_disagree_are_told_apart_from_the_priors():
     # a threshold of 0.08 +- 0.005 m/s against outcomes that stuck at 0.035 and bounced at
-    # 0.045 m/s (60 um CO2: V_stick = 0.08 m/s needs T_vis near 1.4e-8 s, the outcomes 1.1-1.2e-9
-    # s, Section 4.4's curve): the chain settles between them, inside the prior, and the
+    # 0.045 m/s (60 um CO2: V_stick = 0.08 m/s needs T_vis = 2.9e-9 s, the outcomes 0.68-1.19e-9
+    # s, fit_t_vis of each speed): the chain settles between them, inside the prior, and the
     # warning says the data disagree rather than blaming the priors
     w = _warned(v_stick=(0.08, 0.005), sticking=([0.03, 0.035, 0.045, 0.05], [1, 1, 0, 0]))
     misfit = [m for m in w if "not fitted" in m]

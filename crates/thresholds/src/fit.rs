@@ -18,6 +18,12 @@ use numerics::roots::{illinois, Illinois};
 use numerics::{format::number, OutOfRange};
 use std::cell::Cell;
 
+/// How far the model's own T_vis -> 0 limit of V_stick lies above V_stick,JKR (relative):
+/// 1.5496e-4 at every k of the master tables (their JKR plateau, F = 1.000155 at x = -17), as
+/// sqrt(14.1844/14.18) - 1 from the potential (the paper rounds the coefficient to 14.18). For
+/// the messages only: the fit finds the limit itself, as V_stick at its smallest T_vis (1e-20 s).
+pub const JKR_LIMIT_EXCESS: f64 = 1.55e-4;
+
 /// Relative tolerance of the fitted T_vis (dimensionless): the bracket in ln T_vis at most this
 /// wide, far below the uncertainty of any measured V_stick. Alone it is not enough next to the
 /// no-bouncing cliff, where d ln V_stick / d ln T_vis grows without bound: there a bracket of
@@ -128,7 +134,7 @@ impl FitWarning {
                 v_stick,
                 v_stick_jkr,
             } => format!(
-                "V_stick = {} m/s lies between V_stick,JKR = {} m/s and the T_vis -> 0 limit of V_stick, 1.55e-4 above it (the paper's 14.18 is rounded): T_vis = 0 (the JKR limit; no T_vis > 0 gives a V_stick that low)",
+                "V_stick = {} m/s lies between V_stick,JKR = {} m/s and the T_vis -> 0 limit of V_stick, {JKR_LIMIT_EXCESS:.2e} above it (the paper's 14.18 is rounded): T_vis = 0 (the JKR limit; no T_vis > 0 gives a V_stick that low)",
                 number(*v_stick),
                 number(*v_stick_jkr)
             ),
@@ -139,7 +145,7 @@ impl FitWarning {
                     format!("V_stick,JKR = {} m/s", number(*v_stick_jkr))
                 } else {
                     format!(
-                        "the T_vis -> 0 limit of V_stick, 1.55e-4 above V_stick,JKR = {} m/s",
+                        "the T_vis -> 0 limit of V_stick, {JKR_LIMIT_EXCESS:.2e} above V_stick,JKR = {} m/s",
                         number(*v_stick_jkr)
                     )
                 }

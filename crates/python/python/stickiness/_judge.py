@@ -75,7 +75,10 @@ def judged(
         "the data sets may disagree with each other, or with the model as set up (a unit, k, "
         "the geometry, a size distribution)"
     )
-    chi2, n = model.misfit(*args)
+    # V_stick and e at the best point, once for every check below
+    vs = None if model.data.v_stick is None and model.outcomes is None else model.v_stick(*args)
+    e_best = None if model.data.restitution is None else model.e_observed(*args)
+    chi2, n = model.misfit(*args, v_stick=vs, e_model=e_best)
     if n and _chi2_sigmas(float(chi2[0]), n) > MISFIT_SIGMAS:
         kinds = [w for w, given in (
             ("the measured threshold", model.data.v_stick is not None),
@@ -89,7 +92,8 @@ def judged(
             f"{MISFIT_SIGMAS:g} sigma); {why}"
         )
     if model.outcomes is not None:
-        lp = model.outcomes.log_observed(model.v_stick(*args))[0]
+        assert vs is not None
+        lp = model.outcomes.log_observed(vs)[0]
         worst = int(np.argmin(lp))
         if lp[worst] < math.log(OUTCOME_P_MIN):
             o = model.outcomes
@@ -100,19 +104,22 @@ def judged(
                 f"{math.exp(lp[worst]):.2g} (the least of the sticking outcomes'; a mislabel, a "
                 f"speed error larger than given, or a unit); {why}"
             )
-    coarse = _coarse_restitution(model, args)
+    coarse = _coarse_restitution(model, args, e_best)
     if coarse:
         out.append(coarse)
     return out
 
 
 def _coarse_restitution(
-    model: Model, args: Tuple[np.ndarray, Optional[np.ndarray]]
+    model: Model,
+    args: Tuple[np.ndarray, Optional[np.ndarray]],
+    e_best: Optional[np.ndarray] = None,
 ) -> Optional[str]:
     """Where the sample's restitution radii are too few for the data: e at the chain's best
     point changes between neighbouring radii by more than a datum's sigma, so the mixture over
     them is lumpy on the scale the data resolve (a posterior too narrow or shifted). One radius
-    standing for several is compared with the sample's quartile radii."""
+    standing for several is compared with the sample's quartile radii. ``e_best``: e at the
+    restitution radii and ``args``, where the caller has it already."""
     if model.data.restitution is None or len(model.sizes) < 2:
         return None
     v, _, e_err = model.data.restitution
@@ -120,7 +127,7 @@ def _coarse_restitution(
         quartiles = np.array([model.sizes.quantile(q) for q in (0.25, 0.5, 0.75)])
         e = model.e_observed(*args, radii=quartiles)[0]
     else:
-        e = model.e_observed(*args)[0]
+        e = (model.e_observed(*args) if e_best is None else e_best)[0]
     step = np.abs(np.diff(e, axis=0)).max(axis=0)
     worst = int(np.argmax(step / e_err))
     if step[worst] <= e_err[worst]:

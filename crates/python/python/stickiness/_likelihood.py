@@ -330,20 +330,31 @@ class Model:
             total += mix.sum(axis=1)
         return total
 
-    def misfit(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> Tuple[np.ndarray, int]:
+    def misfit(
+        self,
+        t_vis: np.ndarray,
+        gamma_sv: Optional[np.ndarray],
+        v_stick: Optional[np.ndarray] = None,
+        e_model: Optional[np.ndarray] = None,
+    ) -> Tuple[np.ndarray, int]:
         """chi^2 of the Gaussian data for each walker, and their number (0: sticking outcomes
         alone, chi^2 0): the threshold's z^2, and for each coefficient of restitution the z^2
         of its probability integral transform under the mixture over the sample's radii, z =
         Phi^-1(sum_r w_r Phi((e - e_r) / sigma)), which is (e - e_model) / sigma for one radius
-        and a standard normal deviate for data the model made whatever the sample."""
+        and a standard normal deviate for data the model made whatever the sample.
+        ``v_stick`` (:meth:`v_stick`) and ``e_model`` (:meth:`e_observed`) at these parameters
+        where the caller has them already, else computed."""
         chi2 = np.zeros(t_vis.size)
         n = 0
         if self.data.v_stick is not None:
-            chi2 += self._threshold_z(self.v_stick(t_vis, gamma_sv)) ** 2
+            vs = self.v_stick(t_vis, gamma_sv) if v_stick is None else v_stick
+            chi2 += self._threshold_z(vs) ** 2
             n += 1
         if self.data.restitution is not None:
             _, e, e_err = self.data.restitution
-            r = (e[None, None, :] - self.e_observed(t_vis, gamma_sv)) / e_err
+            if e_model is None:
+                e_model = self.e_observed(t_vis, gamma_sv)
+            r = (e[None, None, :] - e_model) / e_err
             chi2 += (_mixture_deviate(r, self.e_weights) ** 2).sum(axis=1)
             n += e.size
         return chi2, n
