@@ -2,6 +2,7 @@
 prior's rather than the data's, and data the model cannot fit. Each test names its truth: the
 JKR limit of Section 5.1, data the model made, a chi^2 table."""
 
+import math
 import warnings
 
 import numpy as np
@@ -77,36 +78,44 @@ def test_the_misfit_of_restitution_is_a_normal_deviate():
 
 
 def test_too_few_restitution_radii_are_warned_of():
-    # the model's own e at the 8 quantile radii of a sample (lognormal, width 0.3, 60 um,
-    # T_vis = 3e-10 s; st.collide) changes by up to 0.2 from one radius to the next at 0.05 m/s
-    # (next to the thresholds of the small grains): coarse against e_err = 0.1, not against 0.3
+    # the chain's restitution ln L (e at the restitution radii, interpolated in ln R) against
+    # the same likelihood with e computed at the sample's 64 radii and their 63 midpoints (127
+    # collisions a speed, st.collide), integrated by brute force over 1e5 cells of u (the sample
+    # read as its quantile function): warned of where they differ by more than 1 in ln L. The
+    # model's own e (lognormal of width 0.3 about 60 um, T_vis = 3e-10 s) changes by 0.6 over
+    # the sample at 0.05-0.1 m/s: the median radius alone is coarse against e_err = 0.05, no
+    # number of radii against 0.5
     from stickiness._judge import _coarse_restitution
     from stickiness._likelihood import Data, Model
 
     sizes = st.SizeDistribution.lognormal(median=R, width=0.3)
     v = np.array([0.05, 0.07, 0.1])
-    q = (np.arange(8) + 0.5) / 8
-    e = st.collide(CO2, np.array([sizes.quantile(x) for x in q])[:, None], 3e-10, v,
-                   method="table").e_observed
-    step = np.abs(np.diff(e, axis=0)).max()
-    assert 0.1 < step < 0.3
-    for e_err in (0.1, 0.3):
-        data = Data.parse(None, None, (v, np.full(3, 0.5), e_err))
-        model = Model(CO2, sizes, None, False, 0.01, data, "table", 1e-6, 0.5, 8)
+    mid = np.cumsum(sizes.weights) - 0.5 * sizes.weights
+    finer = np.sort(np.concatenate([sizes.radii, np.sqrt(sizes.radii[1:] * sizes.radii[:-1])]))
+    u_finer = np.sort(np.concatenate([mid, 0.5 * (mid[1:] + mid[:-1])]))
+    e_finer = st.collide(CO2, finer[:, None], 3e-10, v, method="table").e_observed
+    assert np.ptp(e_finer[:, 0]) > 0.5
+    cells = (np.arange(100_000) + 0.5) / 100_000
+    seen = set()
+    for nodes, e_err in ((1, 0.05), (1, 0.5), (8, 0.05), (8, 0.5), (8, 0.01)):
+        e = np.array([0.2, 0.5, 0.6])
+        data = Data.parse(None, None, (v, e, e_err))
+        model = Model(CO2, sizes, None, False, 0.01, data, "table", 1e-6, 0.5, nodes)
+        used = float(model.log_likelihood(np.array([3e-10]), None)[0])
+        reference = sum(
+            math.log(np.mean(np.exp(-0.5 * ((np.interp(cells, u_finer, e_finer[:, j]) - e[j])
+                                            / e_err) ** 2)))
+            for j in range(v.size)
+        )
         message = _coarse_restitution(model, (np.array([3e-10]), None))
-        assert (message is not None) == (step > e_err), (e_err, step, message)
+        shift = used - reference
+        assert (message is not None) == (abs(shift) > 1.0), (nodes, e_err, shift, message)
         if message:
-            assert f"up to {step:.2g} (at v_in = " in message and "restitution_nodes" in message
-    # one radius standing for the whole sample: e at its quartile radii differs by more than
-    # 0.1 at 0.05 m/s (st.collide), so it is coarse too
-    quartiles = np.array([sizes.quantile(x) for x in (0.25, 0.5, 0.75)])[:, None]
-    spread = np.abs(np.diff(st.collide(CO2, quartiles, 3e-10, v, method="table").e_observed,
-                            axis=0)).max()
-    assert spread > 0.1
-    one = Model(CO2, sizes, None, False, 0.01, Data.parse(None, None, (v, np.full(3, 0.5), 0.1)),
-                "table", 1e-6, 0.5, 1)
-    message = _coarse_restitution(one, (np.array([3e-10]), None))
-    assert message is not None and "1 restitution radius resolves" in message, message
+            assert f"moves by {shift:+.2g} in ln L" in message and "restitution_nodes" in message
+        seen.add(message is not None)
+        if e_err == 0.5:
+            assert message is None
+    assert seen == {True, False}
     with pytest.raises(ValueError, match="restitution_nodes"):
         st.infer(CO2, sizes, restitution=(v, np.full(3, 0.5), 0.15), restitution_nodes=0)
 

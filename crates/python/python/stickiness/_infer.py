@@ -260,8 +260,9 @@ def infer(
         Bouncing collisions, a tuple of columns: impact speeds (m/s), measured e and its
         1-sigma (one for all or one each); Gaussian. The
         model's e comes from the collision itself; a collision that sticks or hits twice is
-        observed as e = 0 (Section 4.4). For a sample of sizes e is a mixture over
-        ``restitution_nodes`` (default 8) quantile radii.
+        observed as e = 0 (Section 4.4). For a sample of sizes the likelihood integrates
+        over the sample read as its quantile function, e computed at ``restitution_nodes``
+        (default 8) radii and interpolated in ln R (needs scipy).
     free : sequence of {'t_vis', 'gamma_sv'}, optional
         The parameters to infer. Default ``('t_vis',)``.
     priors : dict, optional
@@ -294,10 +295,11 @@ def infer(
         The quantile of V_stick over a sample's radii a measured threshold stands for (0..1).
         Default 0.5.
     restitution_nodes : int, optional
-        The equal-weight quantile radii of a ``SizeDistribution`` over which each coefficient
-        of restitution is mixed (1-1024, at most the sample's own radii, which it then uses; a
-        collision for each per walker and datum). Default 8; warned of where e changes by more
-        than its sigma from one radius to the next.
+        The radii of a ``SizeDistribution`` at which e is computed for each coefficient of
+        restitution, equally spaced in ln R over the sample's range and interpolated to its
+        radii (1-1024, at most the sample's own radii, which it then uses; 1: the median; a
+        collision for each per walker and datum). Default 8; warned of where e computed at
+        twice the sample's radii moves ln L at the chain's best point by more than 1.
 
     Returns
     -------
@@ -322,8 +324,9 @@ def infer(
         the other end); Gaussian data (a threshold, coefficients of restitution) more than 3
         sigma (of their chi^2) from the model at the chain's best point, or a sticking outcome
         with probability below 1e-6 there (not fitted: a unit, a prior, or data sets that
-        disagree); for a ``SizeDistribution``, e changing by more than a datum's sigma between
-        neighbouring restitution radii (raise ``restitution_nodes``).
+        disagree); for a ``SizeDistribution``, restitution radii too few for the data (ln L at the
+        chain's best point moving by more than 1 with e computed at twice the sample's radii:
+        raise ``restitution_nodes``).
 
     Notes
     -----

@@ -22,6 +22,10 @@ PRIOR_EDGE = 0.05
 #: degrees of freedom, by the Wilson-Hilferty transform) from the model: they are not fitted
 #: within the priors (p < 1.3e-3 for data the model made).
 MISFIT_SIGMAS = 3.0
+#: The restitution log-likelihood at the chain's best point moving by more than this when e
+#: is computed at twice the radii (``_coarse_restitution``): a posterior's shape changes
+#: visibly with a change of ln L of order 1 across it.
+COARSE_LN_L = 1.0
 #: A sticking outcome whose probability at the chain's best point is below this is not fitted:
 #: about 5 sigma of a Gaussian's one tail (a speed error larger than given, a mislabel).
 OUTCOME_P_MIN = 1e-6
@@ -115,35 +119,41 @@ def _coarse_restitution(
     args: Tuple[np.ndarray, Optional[np.ndarray]],
     e_best: Optional[np.ndarray] = None,
 ) -> Optional[str]:
-    """Where the sample's restitution radii are too few for the data: e at the chain's best
-    point changes between neighbouring radii by more than a datum's sigma, so the mixture over
-    them is lumpy on the scale the data resolve (a posterior too narrow or shifted). One radius
-    standing for several is compared with the sample's quartile radii. ``e_best``: e at the
-    restitution radii and ``args``, where the caller has it already."""
+    """Where the sample's restitution radii are too few for the data: at the chain's best point
+    the restitution log-likelihood as the chain saw it (e at the restitution radii, interpolated
+    in ln R) and with e computed at twice as many radii of the sample (its radii and their
+    midpoints) differ by more than :data:`COARSE_LN_L`: the posterior may be shifted or too
+    narrow. ``e_best``: e at the restitution radii and ``args``, where the caller has it."""
     if model.data.restitution is None or len(model.sizes) < 2:
         return None
-    v, _, e_err = model.data.restitution
-    if model.e_weights.size == 1:
-        quartiles = np.array([model.sizes.quantile(q) for q in (0.25, 0.5, 0.75)])
-        e = model.e_observed(*args, radii=quartiles)[0]
-    else:
-        e = (model.e_observed(*args) if e_best is None else e_best)[0]
-    step = np.abs(np.diff(e, axis=0)).max(axis=0)
-    worst = int(np.argmax(step / e_err))
-    if step[worst] <= e_err[worst]:
+    v, e, e_err = model.data.restitution
+    e_model = model.e_observed(*args) if e_best is None else e_best
+    used = model.e_mixture.log_density(model.e_interpolated(e_model), e, e_err)[0]
+    radii = model.e_mixture_radii
+    between = np.sqrt(radii[:-1] * radii[1:])
+    finer = np.empty(2 * radii.size - 1)
+    finer[0::2], finer[1::2] = radii, between
+    e_finer = model.e_observed(*args, radii=finer)
+    reference = model.e_mixture.refined().log_density(e_finer, e, e_err)[0]
+    shift = float((used - reference).sum())
+    if not abs(shift) > COARSE_LN_L:
         return None
-    n, radii = model.e_weights.size, len(model.sizes)
+    worst = int(np.argmax(np.abs(used - reference)))
+    n, interpolated = model.e_radii.size, model.e_interpolation is not None
     more = (
-        f"raise restitution_nodes (at most the sample's {radii} radii; a collision each per "
-        f"walker, datum and step)" if n < radii else
+        f"raise restitution_nodes (at most the sample's {radii.size} radii; a collision each "
+        f"per walker, datum and step)" if interpolated else
         f"give the sample more radii (SizeDistribution.lognormal(..., nodes=N)) and raise "
         f"restitution_nodes with them"
     )
+    where = ("e at the median radius alone" if n == 1 else
+             f"e computed at {n} radii and interpolated" if interpolated else
+             f"the sample's {n} radii")
     return (
-        f"the sample's {n} restitution radi{'us' if n == 1 else 'i'} resolve"
-        f"{'s' if n == 1 else ''} e only in steps of up to {step[worst]:.2g} (at v_in = "
-        f"{v[worst]:.3g} m/s), more than its e_err = {e_err[worst]:.2g}: the mixture over them is "
-        f"too coarse for data this precise, and the posterior may be too narrow or shifted; {more}"
+        f"the restitution likelihood at the chain's best point moves by {shift:+.2g} in ln L "
+        f"(most at v_in = {v[worst]:.3g} m/s) when e is computed at {finer.size} radii of the "
+        f"sample instead of {where}: too coarse for data this precise (e_err down to "
+        f"{float(e_err.min()):.2g}), and the posterior may be shifted or too narrow; {more}"
     )
 
 

@@ -15,6 +15,7 @@ import numpy as np
 
 from . import _args, _core
 from ._core import Material
+from ._mixture import Mixture, _phi
 from ._sizes import SizeDistribution, weighted_quantile
 
 #: The free parameters :func:`stickiness.infer` knows, and their SI units.
@@ -41,12 +42,15 @@ V_MAX_MARGIN = 2.0
 #: 1e10), while the collider refuses c_a > 3e10 (millions of steps). The master table clamps
 #: its nodes at the same value.
 C_A_MAX = 1e8
-#: A polydisperse sample enters each restitution point through this many equal-weight quantile
-#: radii by default (a collision for each per walker and point: the cost of e is what limits the
-#: quadrature; the thresholds use every radius of the sample). Coarse where e changes by more
-#: than its measured sigma from one radius to the next (:func:`stickiness.infer` warns then:
-#: ``restitution_nodes``).
+#: e is computed by collisions at this many radii of a polydisperse sample by default, equally
+#: spaced in ln R over the sample's range (a collision for each per walker and datum: the cost
+#: of e is what limits them), and interpolated linearly in ln R to the sample's radii, over which
+#: the likelihood integrates in closed form (:mod:`._mixture`). Coarse where e bends between
+#: them by more than a datum's sigma (:func:`stickiness.infer` warns then: ``restitution_nodes``).
 RESTITUTION_NODES = 8
+#: A sample of more radii enters the restitution likelihood through this many equal-weight
+#: quantile radii: each costs an interpolated e per walker, datum and step.
+RESTITUTION_MIXTURE_MAX = 1024
 
 
 def _columns(name: str, value: Any, names: str, or_also: str = "") -> None:
@@ -242,13 +246,34 @@ class Model:
             *data.sticking, sizes.weights, data.sticking_err
         )
         self._fixed_by_walkers: Dict[int, Tuple[np.ndarray, Optional[np.ndarray], np.ndarray]] = {}
-        nodes = min(restitution_nodes, len(sizes))
-        if nodes == len(sizes):
-            self.e_radii, self.e_weights = sizes.radii, sizes.weights
+        # the restitution likelihood's radii (the sample's, or its quantiles where they are
+        # many) and the fewer radii e is computed at, interpolated to them in ln R
+        if len(sizes) <= RESTITUTION_MIXTURE_MAX:
+            fine, weights = sizes.radii, sizes.weights
         else:
-            q = (np.arange(nodes) + 0.5) / nodes
-            self.e_radii = np.array([sizes.quantile(x) for x in q])
-            self.e_weights = np.full(nodes, 1.0 / nodes)
+            q = (np.arange(RESTITUTION_MIXTURE_MAX) + 0.5) / RESTITUTION_MIXTURE_MAX
+            fine = np.array([sizes.quantile(x) for x in q])
+            weights = np.full(q.size, 1.0 / q.size)
+        self.e_mixture = Mixture(weights)
+        #: The radii (m) of the restitution likelihood's mixture.
+        self.e_mixture_radii: np.ndarray = fine
+        # one radius where the sample's radii are all one (nothing to space them over)
+        nodes = min(restitution_nodes, fine.size) if fine[-1] > fine[0] else 1
+        #: The radii (m) e is computed at, and the matrix that interpolates e from them to the
+        #: mixture's radii (None: they are the mixture's radii).
+        self.e_radii: np.ndarray = fine
+        self.e_interpolation: Optional[np.ndarray] = None
+        if nodes < fine.size:
+            self.e_radii = (np.array([sizes.median]) if nodes == 1 else
+                            np.exp(np.linspace(np.log(fine[0]), np.log(fine[-1]), nodes)))
+            self.e_interpolation = np.stack(
+                [np.interp(np.log(fine), np.log(self.e_radii), row) for row in np.eye(nodes)],
+                axis=1,
+            )
+            if nodes > 1:  # the sample's own extremes, not their exp(ln) roundings
+                self.e_radii[[0, -1]] = fine[[0, -1]]
+        if data.restitution is not None and len(sizes) > 1:
+            _phi()  # scipy, or an ImportError saying how to get it, before the chain
 
     def _second(self, n: int) -> Optional[np.ndarray]:
         return None if self.radius2 is None else np.full(n, self.radius2)
@@ -291,8 +316,8 @@ class Model:
 
     def e_observed(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray],
                    radii: Optional[np.ndarray] = None) -> np.ndarray:
-        """The observed e (0 for sticking and double collisions, Section 4.4) of shape
-        (walkers, restitution nodes, speeds): one core call for every walker, radius and speed,
+        """The observed e (0 for sticking and double collisions, Section 4.4) at
+        :attr:`e_radii` (or ``radii``, m), of shape (walkers, radii, speeds): one core call for every walker, radius and speed,
         answered by the restitution tables where they vouch (``method='table'``), by the ODE
         elsewhere."""
         assert self.data.restitution is not None
@@ -323,11 +348,10 @@ class Model:
             if self.outcomes is not None:
                 total += self.outcomes.log_likelihood(vs)
         if self.data.restitution is not None:
-            z = self._restitution_ln(t_vis, gamma_sv)
-            # the radius of each collision is unknown: a mixture over the sample's nodes
-            top = z.max(axis=1, keepdims=True)
-            mix = top[:, 0, :] + np.log(np.exp(z - top).transpose(0, 2, 1) @ self.e_weights)
-            total += mix.sum(axis=1)
+            # the radius of each collision is unknown: the mixture over the sample's radii
+            _, e, e_err = self.data.restitution
+            e_model = self.e_interpolated(self.e_observed(t_vis, gamma_sv))
+            total += self.e_mixture.log_density(e_model, e, e_err).sum(axis=1)
         return total
 
     def misfit(
@@ -340,8 +364,9 @@ class Model:
         """chi^2 of the Gaussian data for each walker, and their number (0: sticking outcomes
         alone, chi^2 0): the threshold's z^2, and for each coefficient of restitution the z^2
         of its probability integral transform under the mixture over the sample's radii, z =
-        Phi^-1(sum_r w_r Phi((e - e_r) / sigma)), which is (e - e_model) / sigma for one radius
-        and a standard normal deviate for data the model made whatever the sample.
+        Phi^-1(int Phi((e - e(u)) / sigma) du) (:meth:`Mixture.deviate`), which is (e -
+        e_model) / sigma for one radius and a standard normal deviate for data the model made
+        whatever the sample.
         ``v_stick`` (:meth:`v_stick`) and ``e_model`` (:meth:`e_observed`) at these parameters
         where the caller has them already, else computed."""
         chi2 = np.zeros(t_vis.size)
@@ -354,8 +379,8 @@ class Model:
             _, e, e_err = self.data.restitution
             if e_model is None:
                 e_model = self.e_observed(t_vis, gamma_sv)
-            r = (e[None, None, :] - e_model) / e_err
-            chi2 += (_mixture_deviate(r, self.e_weights) ** 2).sum(axis=1)
+            deviate = self.e_mixture.deviate(self.e_interpolated(e_model), e, e_err)
+            chi2 += (deviate**2).sum(axis=1)
             n += e.size
         return chi2, n
 
@@ -369,27 +394,12 @@ class Model:
              else weighted_quantile(clipped, self.sizes.weights, self.quantile))
         return (np.asarray(q) - value) / sigma
 
-    def _restitution_ln(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray]) -> np.ndarray:
-        """-(e_model - e)^2 / (2 sigma^2) of shape (walkers, restitution nodes, speeds)."""
-        assert self.data.restitution is not None
-        _, e, e_err = self.data.restitution
-        model = self.e_observed(t_vis, gamma_sv)
-        return -0.5 * ((model - e[None, None, :]) / e_err) ** 2
-
-
-def _mixture_deviate(r: np.ndarray, weights: np.ndarray) -> np.ndarray:
-    """Phi^-1(sum_r w_r Phi(r)) over axis 1 of ``r`` (walkers, nodes, points), each tail from
-    its own side so that neither rounds to 0 or 1 (``erfc``), clipped at 1e-300 (38 sigma)."""
-    erfc = np.vectorize(math.erfc, otypes=[float])
-    lower = np.einsum("wnp,n->wp", 0.5 * erfc(-r / math.sqrt(2.0)), weights)
-    upper = np.einsum("wnp,n->wp", 0.5 * erfc(r / math.sqrt(2.0)), weights)
-    inv = np.vectorize(NormalDist().inv_cdf, otypes=[float])
-    # each branch is used where its tail is the smaller one (at most 1/2); both are evaluated
-    return np.where(
-        lower < upper,
-        inv(np.clip(lower, 1e-300, 0.5)),
-        -inv(np.clip(upper, 1e-300, 0.5)),
-    )
+    def e_interpolated(self, e_model: np.ndarray) -> np.ndarray:
+        """e at the mixture's radii from e at :attr:`e_radii` (walkers, radii, speeds),
+        linear in ln R between them."""
+        if self.e_interpolation is None:
+            return e_model
+        return (e_model.transpose(0, 2, 1) @ self.e_interpolation.T).transpose(0, 2, 1)
 
 
 class Outcomes:
@@ -467,18 +477,6 @@ class Outcomes:
         p = self.sorted_probability(v_stick)
         with np.errstate(divide="ignore"):
             return np.log(np.where(self.stuck, p, 1.0 - p))
-
-
-def _phi() -> Tuple[Any, Any]:
-    """``scipy.special``'s ``log_ndtr`` and ``ndtr``, ln Phi and Phi (the likelihood of sticking
-    outcomes with speed errors), or an ``ImportError`` saying how to get them."""
-    try:
-        from scipy.special import log_ndtr, ndtr  # type: ignore[import-untyped,unused-ignore]
-    except ImportError:
-        raise ImportError(
-            "sticking outcomes with speed errors need scipy: pip install 'stickiness[infer]'"
-        ) from None
-    return log_ndtr, ndtr
 
 
 def stuck_probability(v_stick: np.ndarray, weights: np.ndarray, v: np.ndarray) -> np.ndarray:
