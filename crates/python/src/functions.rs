@@ -132,13 +132,14 @@ fn collision_columns<'py>(
             let traj = PyDict::new(py);
             let pts = &run.0 .0.trajectory;
             type Pick = fn(&thresholds::TrajectoryPoint) -> f64;
+            // the columns of the CLI's trajectory CSV, in its order
             let fields: [(&str, Pick); 6] = [
                 ("t", |p| p.t),
                 ("a", |p| p.a),
                 ("delta", |p| p.delta),
                 ("delta_dot", |p| p.delta_dot),
-                ("beta", |p| p.beta),
                 ("energy", |p| p.energy),
+                ("beta", |p| p.beta),
             ];
             for (name, pick) in fields {
                 let col: Vec<f64> = pts.iter().map(pick).collect();

@@ -120,3 +120,18 @@ def test_material_file_identity(cli, tmp_path):
     assert (m["gamma_sv"], m["young"], m["poisson"], m["density"]) == (
         0.19, 7e9, 0.25, 930.0
     )
+
+
+def test_trajectory_columns_are_the_cli_s(cli, tmp_path):
+    # collide's trajectory: the dict's keys are the CLI CSV's columns, in its order, and the
+    # numbers the same to the bit
+    path = tmp_path / "path.csv"
+    subprocess.run([cli, "collide", "--t-vis", "1e-9", "--v-in", "0.1", "--trajectory", str(path)],
+                   capture_output=True, text=True, check=True)
+    lines = [line for line in path.read_text().splitlines() if not line.startswith("#")]
+    header = lines[0].split(",")
+    traj = st.collide(CO2, 60e-6, 1e-9, 0.1, trajectory=True).trajectory
+    assert list(traj) == header
+    first = [float(x) for x in lines[1].split(",")]
+    assert first == [float(traj[name][0]) for name in header]
+    assert len(lines) - 1 == traj["t"].size

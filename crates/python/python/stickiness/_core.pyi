@@ -133,7 +133,7 @@ class CollisionColumns(TypedDict, total=False):
     v_stick_jkr: _F  # V_stick,JKR (m/s)
     sticking_criterion: List[Optional[str]]  # 'energy_bound', 'oscillations' or None
     warnings: _Warnings
-    trajectory: Dict[str, _F]  # t (s), a, delta (m), delta_dot (m/s), beta, energy (J)
+    trajectory: Dict[str, _F]  # t (s), a, delta (m), delta_dot (m/s), energy (J), beta
     method: npt.NDArray[np.uint8]  # 0: the ODE, 1: the restitution tables
 
 class VStickColumns(TypedDict):

@@ -170,7 +170,8 @@ class Collision(_Columns):
         arrays, an object array of the broadcast shape holding those).
     trajectory : dict of ndarray or None
         With ``trajectory=True``: ``t`` (s), ``a``, ``delta`` (m), ``delta_dot`` (m/s),
-        ``beta`` (dimensionless) and ``energy`` (J) at every solver step; None otherwise.
+        ``energy`` (J) and ``beta`` (dimensionless) at every solver step, the columns of the
+        CLI's ``--trajectory`` CSV in its order; None otherwise.
     method : str or ndarray of str
         Which answered: ``'ode'`` (the collision integrated) or ``'table'`` (the restitution
         tables: outcome, e and V_out only; no contact time or criterion).
