@@ -67,7 +67,7 @@ def shown(value: Any) -> str:
         value = value.item()
     return repr(value)
 
-def _is_quantity(value: Any) -> bool:
+def is_quantity(value: Any) -> bool:
     """Whether ``value`` is an ``astropy.units.Quantity`` (without importing astropy)."""
     units = sys.modules.get("astropy.units")
     return units is not None and isinstance(value, units.Quantity)
@@ -78,7 +78,7 @@ def si(name: str, value: Any) -> Any:
     to a plain number where ``name`` is dimensionless (``k``: ``1 * u.percent`` is 0.01); a
     wrong dimension raises ``ValueError`` naming the argument and the expected unit. Other
     values are returned as they are."""
-    if not _is_quantity(value):
+    if not is_quantity(value):
         return value
     unit = UNITS.get(name)
     if unit is None:

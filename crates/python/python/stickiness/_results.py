@@ -65,7 +65,7 @@ class _Columns:
         for name, value in inputs.items():
             if name in names:
                 raise ValueError(f"to_frame: {name!r} is a field of the result already")
-            if _args._is_quantity(value):
+            if _args.is_quantity(value):
                 # in the unit the call takes under that name (a wrong dimension named), else SI
                 value = _args.si(name, value) if name in _args.UNITS else value.si.value
             try:
