@@ -142,15 +142,17 @@ def test_simulation_based_calibration():
     # truth: parameters drawn from the prior and data made with the model at them; then the
     # 68 % and 95 % intervals must cover the truth in 68 % and 95 % of the data sets
     # (binomial spread over 200 sets: 3.3 % and 1.5 %; the bounds are the issue's). The exact
-    # posterior of this design, on a grid of 30001 T_vis, covers the truth in 67.7 % and 95.7 %
-    # of 3000 sets: what is tested here is that the sampler reaches it.
+    # posterior of this design, on a grid of 30001 T_vis, covers the truth in 67.0 % and 94.5 %
+    # of 3000 sets: what is tested here is that the sampler reaches it. The threshold's sigma
+    # is one for all sets (3 mm/s, 0.08-0.18 of V_stick over the prior), so that it tells
+    # nothing of the truth (0.1 V_stick, until 2026-11-29, did)
     rng = np.random.default_rng(1)
     prior = (1e-12, 1e-9)
     speeds = np.geomspace(0.015, 0.06, 8)  # a fixed design of sticking experiments
+    sigma = 0.003
 
     def posterior_of(t_true, i):
         v_true = st.v_stick(CO2, R, t_true, method="table").v_stick
-        sigma = 0.1 * v_true
         measured = v_true + rng.normal(0.0, sigma)
         return st.infer(CO2, R, v_stick=(measured, sigma), sticking=(speeds, speeds < v_true),
                         priors={"t_vis": prior}, walkers=16, steps=400, burn=100, seed=i)
