@@ -38,6 +38,8 @@ def test_the_density_is_the_integral_over_the_sample(radii):
     u = mixture.positions
     e_model = rng.uniform(0.2, 0.8, (3, radii, 1)) * np.ones((1, 1, 4))
     e_model[1, : radii // 2 + 1, :] = 0.5  # flat segments
+    # nearly flat ones: z changes by 5e-5 over each, below FLAT_SEGMENT, at 60 sigma too
+    e_model[2, : radii // 2 + 1, :] = 0.5 + 1e-6 * np.arange(radii // 2 + 1)[:, None]
     e = np.array([0.3, 0.55, 0.95, -1.0])
     sigma = np.array([0.05, 0.01, 0.02, 0.02])
     got = mixture.log_density(e_model, e, sigma)
@@ -104,3 +106,22 @@ def test_the_restitution_likelihood_is_the_lognormal_s():
     comb = model.e_observed(t, None, radii=q8)[0]
     points = float(np.log(np.exp(-0.5 * ((comb - e) / 0.01) ** 2).mean(axis=0)).sum())
     assert abs(points - want) > 50.0, (points, want)
+
+
+def test_a_sample_is_read_by_its_radii_and_weights_not_how_it_is_written():
+    # synthetic truths: a radius of weight 0 is no grain of the sample (a sample of one
+    # radius, 60 um, gives the same likelihood), and a radius written twice is one radius of
+    # twice the weight
+    v = np.array([0.05, 0.1, 0.2])
+    data = Data.parse(None, None, (v, np.array([0.3, 0.5, 0.6]), 0.02))
+    t = np.array([1e-9])
+
+    def ln_l(sizes):
+        return Model(CO2, sizes, None, False, 0.01, data, "table", 1e-6, 0.5, 8) \
+            .log_likelihood(t, None)[0]
+
+    one = ln_l(st.SizeDistribution([60e-6]))
+    assert ln_l(st.SizeDistribution([40e-6, 60e-6, 90e-6], weights=[0, 1, 0])) == one
+    assert ln_l(st.SizeDistribution([60e-6, 60e-6, 90e-6])) == pytest.approx(
+        ln_l(st.SizeDistribution([60e-6, 90e-6], weights=[2, 1])), rel=1e-14)
+

@@ -22,9 +22,10 @@ PRIOR_EDGE = 0.05
 #: degrees of freedom, by the Wilson-Hilferty transform) from the model: they are not fitted
 #: within the priors (p < 1.3e-3 for data the model made).
 MISFIT_SIGMAS = 3.0
-#: The restitution log-likelihood at the chain's best point moving by more than this when e
-#: is computed at twice the radii (``_coarse_restitution``): a posterior's shape changes
-#: visibly with a change of ln L of order 1 across it.
+#: The restitution log-likelihood at the chain's best point moving by more than this (each
+#: datum's change by size, summed) when e is computed at twice the radii
+#: (``_coarse_restitution``): a posterior's shape changes visibly with a change of ln L of
+#: order 1 across it.
 COARSE_LN_L = 1.0
 #: A sticking outcome whose probability at the chain's best point is below this is not fitted:
 #: about 5 sigma of a Gaussian's one tail (a speed error larger than given, a mislabel).
@@ -120,11 +121,11 @@ def _coarse_restitution(
     e_best: Optional[np.ndarray] = None,
 ) -> Optional[str]:
     """Where the sample's restitution radii are too few for the data: at the chain's best point
-    the restitution log-likelihood as the chain saw it (e at the restitution radii, interpolated
-    in ln R) and with e computed at twice as many radii of the sample (its radii and their
-    midpoints) differ by more than :data:`COARSE_LN_L`: the posterior may be shifted or too
-    narrow. ``e_best``: e at the restitution radii and ``args``, where the caller has it."""
-    if model.data.restitution is None or len(model.sizes) < 2:
+    the restitution log-likelihood of each datum as the chain saw it (e at the restitution
+    radii, interpolated in ln R) and with e computed at twice as many radii of the sample (its
+    radii and their midpoints) differ by more than :data:`COARSE_LN_L` summed over the data:
+    the posterior may be shifted or too narrow. ``e_best``: e at the restitution radii and ``args``, where the caller has it."""
+    if model.data.restitution is None or model.e_mixture_radii.size < 2:
         return None
     v, e, e_err = model.data.restitution
     e_model = model.e_observed(*args) if e_best is None else e_best
@@ -135,8 +136,9 @@ def _coarse_restitution(
     finer[0::2], finer[1::2] = radii, between
     e_finer = model.e_observed(*args, radii=finer)
     reference = model.e_mixture.refined().log_density(e_finer, e, e_err)[0]
-    shift = float((used - reference).sum())
-    if not abs(shift) > COARSE_LN_L:
+    # summed by size, so that shifts of opposite sign do not hide each other
+    moved = float(np.abs(used - reference).sum())
+    if not moved > COARSE_LN_L:
         return None
     worst = int(np.argmax(np.abs(used - reference)))
     n, interpolated = model.e_radii.size, model.e_interpolation is not None
@@ -150,8 +152,8 @@ def _coarse_restitution(
              f"e computed at {n} radii and interpolated" if interpolated else
              f"the sample's {n} radii")
     return (
-        f"the restitution likelihood at the chain's best point moves by {shift:+.2g} in ln L "
-        f"(most at v_in = {v[worst]:.3g} m/s) when e is computed at {finer.size} radii of the "
+        f"the restitution likelihood at the chain's best point moves by {moved:.2g} in ln L "
+        f"(summed over the data, most at v_in = {v[worst]:.3g} m/s) when e is computed at {finer.size} radii of the "
         f"sample instead of {where}: too coarse for data this precise (e_err down to "
         f"{float(e_err.min()):.2g}), and the posterior may be shifted or too narrow; {more}"
     )

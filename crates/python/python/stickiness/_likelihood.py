@@ -48,7 +48,8 @@ C_A_MAX = 1e8
 #: them by more than a datum's sigma (:func:`stickiness.infer` warns then: ``restitution_nodes``).
 RESTITUTION_NODES = 8
 #: A sample of more radii enters the restitution likelihood through this many equal-weight
-#: quantile radii: each costs an interpolated e per walker, datum and step.
+#: quantile radii (whose extremes, not the sample's, then bound the radii e is computed at):
+#: each costs an interpolated e per walker, datum and step.
 RESTITUTION_MIXTURE_MAX = 1024
 
 
@@ -246,10 +247,14 @@ class Model:
         )
         self._fixed_by_walkers: Dict[int, Tuple[np.ndarray, Optional[np.ndarray], np.ndarray]] = {}
         # the restitution likelihood's radii (the sample's, or its quantiles where they are
-        # many) and the fewer radii e is computed at, interpolated to them in ln R
-        if len(sizes) <= RESTITUTION_MIXTURE_MAX:
-            fine, weights = sizes.radii, sizes.weights
-        else:
+        # many) and the fewer radii e is computed at, interpolated to them in ln R. Each radius
+        # once, with its weight, and none of weight 0: the reading would otherwise depend on how
+        # the sample is written ([60, 60, 90] um against [60, 90] with weights [2, 1]), and a
+        # radius of weight 0 at an end would stretch the sample to it
+        fine, at = np.unique(sizes.radii, return_inverse=True)
+        weights = np.bincount(at, weights=sizes.weights)
+        fine, weights = fine[weights > 0], weights[weights > 0]
+        if fine.size > RESTITUTION_MIXTURE_MAX:
             q = (np.arange(RESTITUTION_MIXTURE_MAX) + 0.5) / RESTITUTION_MIXTURE_MAX
             fine = np.array([sizes.quantile(x) for x in q])
             weights = np.full(q.size, 1.0 / q.size)
@@ -271,7 +276,7 @@ class Model:
             )
             if nodes > 1:  # the sample's own extremes, not their exp(ln) roundings
                 self.e_radii[[0, -1]] = fine[[0, -1]]
-        if data.restitution is not None and len(sizes) > 1:
+        if data.restitution is not None and fine.size > 1:
             _phi()  # scipy, or an ImportError saying how to get it, before the chain
 
     def _second(self, n: int) -> Optional[np.ndarray]:

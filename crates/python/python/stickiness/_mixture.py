@@ -26,20 +26,19 @@ outcomes).
 from __future__ import annotations
 
 import math
-from statistics import NormalDist
 from typing import Any, Optional, Tuple
 
 import numpy as np
 
 #: A segment over which z changes by less than this is taken at its midpoint, with the
-#: second-order term of the mean of phi over it (relative error below 1e-18 there): the
-#: difference quotient of Phi loses digits as z_b - z_a -> 0.
+#: second-order term of the mean of phi over it (the next term, (z dz)^4 / 1920, below 1e-13 out
+#: to 36 sigma): the difference quotient of Phi loses digits as z_b - z_a -> 0.
 FLAT_SEGMENT = 1e-4
-#: Densities below this (relative to the Gaussian's peak; about 37 sigma) are recomputed from
+#: Densities below this (relative to the Gaussian's peak; 35.9 sigma) are recomputed from
 #: logs (``log_ndtr``), term by term, where the fast sum underflows or loses its digits.
 TINY_DENSITY = 1e-280
 #: The normal deviate of a probability integral transform is clipped at this tail probability
-#: (38 sigma): beyond it ``inv_cdf`` has no digits left.
+#: (37 sigma): beyond it ``ndtri`` has no digits left.
 TINY_TAIL = 1e-300
 
 _SQRT_2PI = math.sqrt(2.0 * math.pi)
@@ -120,10 +119,12 @@ class Mixture:
             across = np.log(np.abs(ndtr(zb) - ndtr(za)))
             segment = np.where(
                 straddle, across,
-                l1 + np.log1p(-np.exp(l2 - l1)),
+                l1 + np.log(-np.expm1(l2 - l1)),
             ) + 0.5 * math.log(2.0 * math.pi) - np.log(dz)
             flat = dz < FLAT_SEGMENT
-            segment = np.where(flat, -0.5 * (0.5 * (za + zb)) ** 2, segment)
+            mid = 0.5 * (za + zb)
+            segment = np.where(flat, -0.5 * mid**2 + np.log1p((mid**2 - 1.0) * dz**2 / 24.0),
+                               segment)
             terms = np.concatenate([
                 segment + np.log(self.segments)[None, :],
                 -0.5 * z[:, [0, -1]] ** 2 + np.log(self.ends)[None, :],
@@ -142,11 +143,12 @@ class Mixture:
             return r[:, 0, :]
         lower = self._mean_phi(r)  # F
         upper = self._mean_phi(-r)  # 1 - F
-        inv = np.vectorize(NormalDist().inv_cdf, otypes=[float])
+        from scipy.special import ndtri  # type: ignore[import-untyped,unused-ignore]
+
         return np.where(
             lower < upper,
-            inv(np.clip(lower, TINY_TAIL, 0.5)),
-            -inv(np.clip(upper, TINY_TAIL, 0.5)),
+            ndtri(np.clip(lower, TINY_TAIL, 0.5)),
+            -ndtri(np.clip(upper, TINY_TAIL, 0.5)),
         )
 
     def _mean_phi(self, r: np.ndarray) -> np.ndarray:
