@@ -121,6 +121,8 @@ def test_a_sample_is_read_by_its_radii_and_weights_not_how_it_is_written():
             .log_likelihood(t, None)[0]
 
     one = ln_l(st.SizeDistribution([60e-6]))
+    dropped = st.SizeDistribution([40e-6, 60e-6, 90e-6], weights=[0, 1, 0])
+    assert dropped.radii.tolist() == [60e-6]
     assert ln_l(st.SizeDistribution([40e-6, 60e-6, 90e-6], weights=[0, 1, 0])) == one
     assert ln_l(st.SizeDistribution([60e-6, 60e-6, 90e-6])) == pytest.approx(
         ln_l(st.SizeDistribution([60e-6, 90e-6], weights=[2, 1])), rel=1e-14)

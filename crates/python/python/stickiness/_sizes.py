@@ -37,7 +37,8 @@ class SizeDistribution:
     samples : array_like or Quantity
         Radii R1 (m, > 0 and finite), e.g. measured grains or quadrature nodes.
     weights : array_like, optional
-        Their weights (>= 0, not all 0; normalised to sum 1). Default: equal weights.
+        Their weights (>= 0, not all 0; normalised to sum 1; radii of weight 0 are dropped).
+        Default: equal weights.
 
     Raises
     ------
@@ -83,6 +84,9 @@ class SizeDistribution:
             if not (np.all(np.isfinite(w)) and np.all(w >= 0) and w.sum() > 0):
                 raise ValueError("weights: must be >= 0 and finite, and not all 0")
             w = w / w.sum()
+            # a radius of weight 0 is no grain of the sample: kept, it would stand at a
+            # cumulative weight of its own in the quantiles (stretching the sample to it)
+            radii, w = radii[w > 0], w[w > 0]
         order = np.argsort(radii, kind="stable")
         #: The radii R1 (m), increasing.
         self.radii: np.ndarray = radii[order]
