@@ -124,7 +124,8 @@ def _coarse_restitution(
     the restitution log-likelihood of each datum as the chain saw it (e at the restitution
     radii, interpolated in ln R) and with e computed at twice as many radii of the sample (its
     radii and their midpoints) differ by more than :data:`COARSE_LN_L` summed over the data:
-    the posterior may be shifted or too narrow. ``e_best``: e at the restitution radii and ``args``, where the caller has it."""
+    the posterior may be shifted or too narrow. ``e_best``: e at the restitution radii and
+    ``args``, where the caller has it."""
     if model.data.restitution is None or model.e_mixture_radii.size < 2:
         return None
     v, e, e_err = model.data.restitution
@@ -153,8 +154,8 @@ def _coarse_restitution(
              f"the sample's {n} radii")
     return (
         f"the restitution likelihood at the chain's best point moves by {moved:.2g} in ln L "
-        f"(summed over the data, most at v_in = {v[worst]:.3g} m/s) when e is computed at {finer.size} radii of the "
-        f"sample instead of {where}: too coarse for data this precise (e_err down to "
+        f"(summed over the data, most at v_in = {v[worst]:.3g} m/s) when e is computed at "
+        f"{finer.size} radii of the sample instead of {where}: too coarse for data this precise (e_err down to "
         f"{float(e_err.min()):.2g}), and the posterior may be shifted or too narrow; {more}"
     )
 

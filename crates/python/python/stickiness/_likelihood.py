@@ -321,9 +321,9 @@ class Model:
     def e_observed(self, t_vis: np.ndarray, gamma_sv: Optional[np.ndarray],
                    radii: Optional[np.ndarray] = None) -> np.ndarray:
         """The observed e (0 for sticking and double collisions, Section 4.4) at
-        :attr:`e_radii` (or ``radii``, m), of shape (walkers, radii, speeds): one core call for every walker, radius and speed,
-        answered by the restitution tables where they vouch (``method='table'``), by the ODE
-        elsewhere."""
+        :attr:`e_radii` (or ``radii``, m), of shape (walkers, radii, speeds): one core call
+        for every walker, radius and speed, answered by the restitution tables where they vouch
+        (``method='table'``), by the ODE elsewhere."""
         assert self.data.restitution is not None
         v = self.data.restitution[0]
         radii = self.e_radii if radii is None else radii
