@@ -30,7 +30,7 @@
 //!   in y, then the quintic in ln k through the six tables around k (11 tables, k = 0.005
 //!   2^(i/3); `answer::K_STENCIL`), the sextic through seven in the first and the last interval
 //!   of k (`answer::K_STENCIL_EDGE`).
-//! - **Vouching.** Every node is an exact search ([`build`]); every interval of a row, every
+//! - **Vouching.** Every node is an exact search (`build`, the builder); every interval of a row, every
 //!   cell between rows and every interval between tables of neighbouring k was checked at its
 //!   midpoint, and the default search agrees with each node; the tables answer only where those
 //!   checks passed, and say nothing elsewhere (a thin band at the ends, where the search itself
@@ -62,6 +62,8 @@
 
 mod answer;
 pub mod binary;
+// public for `cargo xtask master-table` (the builder), not part of the API a user calls
+#[doc(hidden)]
 pub mod build;
 pub mod ends;
 mod file;
@@ -139,6 +141,7 @@ impl MasterTables {
     }
 
     /// Tables already in memory (the build's, before they are written), with their end curves.
+    #[doc(hidden)]
     pub fn from_parts(tables: Vec<Table>, ends: EndCurves) -> MasterTables {
         fn filled<T>(v: T) -> OnceLock<Option<T>> {
             let c = OnceLock::new();

@@ -19,7 +19,7 @@
 //! table k; an answer is the local cubic along the channels, along the row, across rows and
 //! across k. Each cell between two rows was checked at its centre against the ODE (e within
 //! 5e-5, half the 1e-4 promised), and at its quarters at denser speeds
-//! ([`check::check_quarters`]), and each interval between tables of neighbouring k at its centre;
+//! (`check::check_quarters`), and each interval between tables of neighbouring k at its centre;
 //! elsewhere (near the cliff, a double-collision window narrower than 1e-4 of V_stick, speeds
 //! beyond 9.5 e-folds above V_stick, within 1e-5 of V_stick ([`STICK_MARGIN`]) or below the
 //! first channel (sigma or nu = 1e-4), within 3e-4 of the onset ([`ONSET_MARGIN`]), within
@@ -40,9 +40,14 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+// public for `cargo xtask restitution-table` (the builder and its checks), not part of the API
+// a user calls
+#[doc(hidden)]
 pub mod build;
+#[doc(hidden)]
 pub mod check;
 pub mod format;
+#[doc(hidden)]
 pub mod refine;
 mod stencil;
 
