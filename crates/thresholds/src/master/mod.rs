@@ -30,7 +30,7 @@
 //!   in y, then the quintic in ln k through the six tables around k (11 tables, k = 0.005
 //!   2^(i/3); `answer::K_STENCIL`), the sextic through seven in the first and the last interval
 //!   of k (`answer::K_STENCIL_EDGE`).
-//! - **Vouching.** Every node is an exact search (`build`, the builder); every interval of a row, every
+//! - **Vouching.** Every node is an exact search (`build`); every interval of a row, every
 //!   cell between rows and every interval between tables of neighbouring k was checked at its
 //!   midpoint, and the default search agrees with each node; the tables answer only where those
 //!   checks passed, and say nothing elsewhere (a thin band at the ends, where the search itself
