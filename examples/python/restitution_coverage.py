@@ -7,14 +7,15 @@ grains of a lognormal of width 0.3 (radii drawn from the continuous distribution
 radius unknown to the likelihood), speeds log-uniform in 0.03-0.3 m/s, e from `st.collide` plus a
 Gaussian error (clipped at 0, as a measured e is). The posterior is computed exactly on a grid of
 log10 T_vis (the prior log-uniform over 1e-12 - 1e-7 s), from the likelihood `st.infer` uses
-(`stickiness._likelihood.Model`), so no sampler error enters. For data the model made, 95 % of
-the intervals should hold the truth. With `--sticking N` each set is N sticking outcomes
+(`stickiness._likelihood.Model`), so no sampler error enters. For data the model made about
+95 % of the intervals should hold the truth: about, since the truths are drawn from a part of
+the grid's prior (where the data pin T_vis), not from all of it. With `--sticking N` each set is N sticking outcomes
 instead, at speeds within a factor 2 of each grain's own V_stick, T_vis in 10^-10 - 10^-8.5 s;
 `--within` keeps the radii within the sample's extreme radii.
 
     pip install 'stickiness[infer]'
     python examples/python/restitution_coverage.py [--sets 200] [--points 30] [--e-err 0.01]
-        [--restitution-nodes 8] [--nodes 64] [--v-min 0.03] [--sticking N [--within]]
+        [--restitution-nodes 16] [--nodes 64] [--v-min 0.03] [--sticking N [--within]]
 """
 
 import argparse
@@ -28,8 +29,8 @@ parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 parser.add_argument("--sets", type=int, default=200, help="data sets (default 200)")
 parser.add_argument("--points", type=int, default=30, help="values of e a set (default 30)")
 parser.add_argument("--e-err", type=float, default=0.01, help="1-sigma of e (default 0.01)")
-parser.add_argument("--restitution-nodes", type=int, default=8,
-                    help="radii e is computed at (st.infer's restitution_nodes; default 8)")
+parser.add_argument("--restitution-nodes", type=int, default=16,
+                    help="radii e is computed at (st.infer's restitution_nodes; default 16)")
 parser.add_argument("--nodes", type=int, default=64,
                     help="radii of the lognormal sample (SizeDistribution.lognormal; default 64)")
 parser.add_argument("--v-min", type=float, default=0.03,

@@ -262,7 +262,7 @@ def infer(
         model's e comes from the collision itself; a collision that sticks or hits twice is
         observed as e = 0 (Section 4.4). For a sample of sizes the likelihood integrates
         over the sample read as its quantile function, e computed at ``restitution_nodes``
-        (default 8) radii and interpolated in ln R (needs scipy).
+        (default 16) radii and interpolated in ln R (needs scipy).
     free : sequence of {'t_vis', 'gamma_sv'}, optional
         The parameters to infer. Default ``('t_vis',)``.
     priors : dict, optional
@@ -298,7 +298,7 @@ def infer(
         The radii of a ``SizeDistribution`` at which e is computed for each coefficient of
         restitution, equally spaced in ln R over the sample's range and interpolated to its
         radii (1-1024, at most the sample's own radii, which it then uses; 1: the median; a
-        collision for each per walker and datum). Default 8; warned of where e computed at
+        collision for each per walker and datum). Default 16; warned of where e computed at
         twice the sample's radii moves ln L at the chain's best point by more than 1.
 
     Returns

@@ -22,9 +22,10 @@ DEFAULT_NODES = 64
 #: likelihood").
 LOGNORMAL_Z_MAX = 3.5
 #: Fewer nodes than this sit at the equal-weight quantiles (i + 1/2)/nodes instead: spread over
-#: +-3.5 standard deviations they would leave the middle of the distribution empty (the quantile
-#: function off by 1.4 standard deviations with 4 nodes, against 0.9 at the quantiles).
-LOGNORMAL_MIN_SPREAD = 8
+#: +-3.5 standard deviations they would leave the middle of the distribution empty (the
+#: sample's quantile function between 2 and 98 % off by up to 1.0 standard deviation with 5
+#: nodes, against 0.77 at the quantiles; with 6 nodes 0.58 against 0.67).
+LOGNORMAL_MIN_SPREAD = 6
 #: At most this many nodes: every likelihood evaluation asks V_stick at each of them.
 MAX_NODES = 100_000
 
@@ -108,8 +109,9 @@ class SizeDistribution:
             factor exp(1.2816 width) of the median.
         nodes : int, optional
             Number of radii, equally spaced in ln R over +-3.5 ``width`` about the median and
-            weighted by the normal density of ln R there (fewer than 8: at the quantiles (i +
-            1/2)/nodes, with equal weights). Default 64.
+            weighted by the normal density of ln R there (fewer than 6: at the quantiles (i +
+            1/2)/nodes, with equal weights). Default 64. A wide distribution reaches far: width
+            2 spans radii from 1/1100 to 1100 times the median.
 
         Returns
         -------
