@@ -6,12 +6,11 @@ Each data set is made with the model: T_vis log-uniform in 10^-10.5 - 10^-8.5 s,
 grains of a lognormal of width 0.3 (radii drawn from the continuous distribution, each collision's
 radius unknown to the likelihood), speeds log-uniform in 0.03-0.3 m/s, e from `st.collide` plus a
 Gaussian error (clipped at 0, as a measured e is). The posterior is computed exactly on a grid of
-log10 T_vis (the prior log-uniform over 1e-12 - 1e-7 s), from the likelihood `st.infer` uses
-(`stickiness._likelihood.Model`), so no sampler error enters. For data the model made about
-95 % of the intervals should hold the truth: about, since the truths are drawn from a part of
-the grid's prior (where the data pin T_vis), not from all of it. With `--sticking N` each set is N sticking outcomes
-instead, at speeds within a factor 2 of each grain's own V_stick, T_vis in 10^-10 - 10^-8.5 s;
-`--within` keeps the radii within the sample's extreme radii.
+log10 T_vis 0.01 apart over the range the truths are drawn from (the prior, log-uniform), from
+the likelihood `st.infer` uses (`stickiness._likelihood.Model`), so no sampler error enters: for
+data the model made, 95 % of the intervals should hold the truth. With `--sticking N` each set
+is N sticking outcomes instead, at speeds within a factor 2 of each grain's own V_stick, T_vis
+in 10^-10 - 10^-8.5 s; `--within` keeps the radii within the sample's extreme radii.
 
     pip install 'stickiness[infer]'
     python examples/python/restitution_coverage.py [--sets 200] [--points 30] [--e-err 0.01]
@@ -45,13 +44,15 @@ args = parser.parse_args()
 co2 = st.Material.co2()
 median, width = 60e-6, 0.3
 sizes = st.SizeDistribution.lognormal(median, width, nodes=args.nodes)
-grid = np.linspace(-12.0, -7.0, 481)  # log10 T_vis (s): 0.01 dex apart
+# the prior of log10 T_vis (s), from which the truths are drawn, and the grid over it
+prior = (-10.0, -8.5) if args.sticking else (-10.5, -8.5)
+grid = np.linspace(*prior, int(round((prior[1] - prior[0]) / 0.01)) + 1)
 rng = np.random.default_rng(args.seed)
 inside, widths = 0, []
 impossible = 0
 for _ in range(args.sets):
     if args.sticking:
-        truth = rng.uniform(-10.0, -8.5)
+        truth = rng.uniform(*prior)
         radii = median * np.exp(width * rng.standard_normal(args.sticking))
         if args.within:
             radii = np.clip(radii, sizes.radii[0], sizes.radii[-1])
@@ -59,7 +60,7 @@ for _ in range(args.sets):
         v = own * 10 ** rng.uniform(-0.3, 0.3, args.sticking)
         data = Data.parse(None, (v, v < own), None)
     else:
-        truth = rng.uniform(-10.5, -8.5)
+        truth = rng.uniform(*prior)
         v = 10 ** rng.uniform(np.log10(args.v_min), np.log10(0.3), args.points)
         radii = median * np.exp(width * rng.standard_normal(args.points))
         e = st.collide(co2, radii, t_vis=10**truth, v_in=v, method="table").e_observed

@@ -64,8 +64,8 @@ def test_infer_prior_example_runs(tmp_path):
 
 
 def test_restitution_coverage_example_runs(tmp_path):
-    # 40 model-made data sets of 10 e +- 0.02 (seed 1): the 95 % interval holds the truth in 38
-    # (the sample read as continuous, 16 restitution radii; 29 with 8 radii as points, the
+    # 40 model-made data sets of 10 e +- 0.02 (seed 1): the 95 % interval holds the truth in 39
+    # (the sample read as continuous, 16 restitution radii; 30 with 8 radii as points, the
     # likelihood before 2026-11-29); a calibrated binomial(40, 0.95) falls below 34 in 0.3 % of
     # draws
     out = run_example("restitution_coverage.py", "--sets", "40", "--points", "10", "--e-err",

@@ -47,7 +47,7 @@ C_A_MAX = 1e8
 #: the likelihood integrates in closed form (:mod:`._mixture`). Coarse where e bends between
 #: them by more than a datum's sigma (:func:`stickiness.infer` warns then: ``restitution_nodes``).
 #: 16 over a lognormal's +-3.5 widths lie 0.47 widths apart: over 200 model-made sets of 30 e
-#: measured to 0.01 the 95 % interval held the truth in 94 % (8 radii, a width apart: 92.5 %,
+#: measured to 0.01 the 95 % interval held the truth in 94.5 % (8 radii, a width apart: 93 %,
 #: and the warning fired for nearly every set; ``examples/python/restitution_coverage.py``).
 RESTITUTION_NODES = 16
 #: A sample of more radii enters the restitution likelihood through this many equal-weight
