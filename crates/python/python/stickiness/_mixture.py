@@ -26,7 +26,7 @@ outcomes).
 from __future__ import annotations
 
 import math
-from typing import Any, Optional, Tuple
+from typing import Any, Tuple
 
 import numpy as np
 
@@ -47,15 +47,23 @@ _SQRT_2PI = math.sqrt(2.0 * math.pi)
 class Mixture:
     """The sample of radii with ``weights`` (sum 1, the radii increasing) read as a continuous
     distribution: the weight of each segment between neighbouring mid-weights and of the two
-    outer half-weights."""
+    outer half-weights. :meth:`at` makes one from the radii's cumulative weights instead."""
 
-    def __init__(self, weights: np.ndarray, positions: Optional[np.ndarray] = None) -> None:
+    def __init__(self, weights: np.ndarray) -> None:
         w = np.asarray(weights, dtype=float)
-        #: The radii's weights.
-        self.weights = w
+        self._place(np.cumsum(w) - 0.5 * w)
+
+    @classmethod
+    def at(cls, positions: np.ndarray) -> "Mixture":
+        """The reading with radii at the cumulative weights ``positions`` (increasing, within
+        0 .. 1)."""
+        mixture = cls.__new__(cls)
+        mixture._place(np.asarray(positions, dtype=float))
+        return mixture
+
+    def _place(self, u: np.ndarray) -> None:
         #: Each radius's cumulative weight u (its mid-weight), increasing within 0 .. 1.
-        self.positions = np.cumsum(w) - 0.5 * w if positions is None else positions
-        u = self.positions
+        self.positions = u
         #: The weight (a length in u) of each segment between neighbouring radii.
         self.segments = np.diff(u)
         #: The weights of the values kept beyond the first and last radius.
@@ -67,7 +75,7 @@ class Mixture:
         u = self.positions
         fine = np.empty(2 * u.size - 1)
         fine[0::2], fine[1::2] = u, 0.5 * (u[:-1] + u[1:])
-        return Mixture(np.full(fine.size, np.nan), fine)
+        return Mixture.at(fine)
 
     def log_density(self, e_model: np.ndarray, e: np.ndarray, sigma: np.ndarray) -> np.ndarray:
         """ln of int exp(-z(u)^2 / 2) du, z = (e(u) - e) / sigma, for each walker and datum:
