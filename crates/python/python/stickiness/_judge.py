@@ -132,10 +132,12 @@ def _coarse_restitution(
     e_model = model.e_observed(*args) if e_best is None else e_best
     used = model.e_mixture.log_density(model.e_interpolated(e_model), e, e_err)[0]
     radii = model.e_mixture_radii
-    between = np.sqrt(radii[:-1] * radii[1:])
-    finer = np.empty(2 * radii.size - 1)
-    finer[0::2], finer[1::2] = radii, between
-    e_finer = model.e_observed(*args, radii=finer)
+    # e at the mixture's radii (known already where they are the restitution radii) and at
+    # their midpoints in ln R, interleaved as Mixture.refined places them
+    at_radii = e_model if model.e_interpolation is None else model.e_observed(*args, radii=radii)
+    between = model.e_observed(*args, radii=np.sqrt(radii[:-1] * radii[1:]))
+    e_finer = np.empty((at_radii.shape[0], 2 * radii.size - 1, at_radii.shape[2]))
+    e_finer[:, 0::2], e_finer[:, 1::2] = at_radii, between
     reference = model.e_mixture.refined().log_density(e_finer, e, e_err)[0]
     # summed by size, so that shifts of opposite sign do not hide each other
     moved = float(np.abs(used - reference).sum())
@@ -155,8 +157,9 @@ def _coarse_restitution(
     return (
         f"the restitution likelihood at the chain's best point moves by {moved:.2g} in ln L "
         f"(summed over the data, most at v_in = {v[worst]:.3g} m/s) when e is computed at "
-        f"{finer.size} radii of the sample instead of {where}: too coarse for data this precise (e_err down to "
-        f"{float(e_err.min()):.2g}), and the posterior may be shifted or too narrow; {more}"
+        f"{2 * radii.size - 1} radii of the sample instead of {where}: too coarse for data "
+        f"this precise (e_err down to {float(e_err.min()):.2g}), and the posterior may be "
+        f"shifted or too narrow; {more}"
     )
 
 
