@@ -334,6 +334,18 @@ def test_a_size_distribution():
         st.SizeDistribution.lognormal(median=1e-6, width=0.0)
 
 
+def test_quantiles_of_a_sample_are_numpys_for_equal_weights():
+    # numpy.percentile's "hazen" method reads sample i at (i + 1/2)/n, as SizeDistribution does
+    radii = np.random.default_rng(5).lognormal(np.log(60e-6), 0.5, 37)
+    q = np.linspace(0.0, 1.0, 101)
+    expected = np.exp(np.percentile(np.log(radii), 100 * q, method="hazen"))
+    d = st.SizeDistribution(radii)
+    np.testing.assert_allclose(d.quantile(q), expected, rtol=1e-12)
+    assert d.quantile(0.25) == pytest.approx(expected[25], rel=1e-12)
+    with pytest.raises(ValueError, match="q = 1.5"):
+        d.quantile([0.5, 1.5])
+
+
 def test_a_progress_bar_when_asked(capsys):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", st.StickinessWarning)

@@ -125,3 +125,20 @@ def test_a_sample_is_read_by_its_radii_and_weights_not_how_it_is_written():
     assert dropped.radii.tolist() == [60e-6] and dropped.weights.tolist() == [1.0]
     assert ln_l(st.SizeDistribution([60e-6, 60e-6, 90e-6])) == pytest.approx(
         ln_l(st.SizeDistribution([60e-6, 90e-6], weights=[2, 1])), rel=1e-14)
+
+
+def test_a_large_sample_is_read_at_its_quantiles():
+    # numpy.percentile's "hazen" method reads sample i at (i + 1/2)/n, as the mixture does: a
+    # sample of more radii than RESTITUTION_MIXTURE_MAX stands as that many equal-weight
+    # quantiles of it
+    from stickiness._likelihood import RESTITUTION_MIXTURE_MAX as n
+
+    radii = np.random.default_rng(8).lognormal(np.log(60e-6), 0.3, 5000)
+    data = Data.parse(None, None, (np.array([0.1]), np.array([0.5]), 0.02))
+    model = Model(CO2, st.SizeDistribution(radii), None, False, 0.01, data, "table", 1e-6, 0.5,
+                  16)
+    q = (np.arange(n) + 0.5) / n
+    want = np.exp(np.percentile(np.log(radii), 100 * q, method="hazen"))
+    # (the cumulative weights' rounding: 1e-11 at the top)
+    np.testing.assert_allclose(model.e_mixture_radii, want, rtol=1e-9)
+    np.testing.assert_allclose(model.e_mixture.positions, q, rtol=1e-12)

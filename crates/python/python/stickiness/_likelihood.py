@@ -257,10 +257,9 @@ class Model:
         fine, at = np.unique(sizes.radii, return_inverse=True)
         weights = np.bincount(at, weights=sizes.weights)
         if fine.size > RESTITUTION_MIXTURE_MAX:
-            # the sample's quantiles, as SizeDistribution.quantile reads them (ln R linear in
-            # the cumulative weight between the radii' mid-weights), all in one interpolation
+            # the sample's (tied radii merged) equal-weight quantiles
             q = (np.arange(RESTITUTION_MIXTURE_MAX) + 0.5) / RESTITUTION_MIXTURE_MAX
-            fine = np.exp(np.interp(q, np.cumsum(weights) - 0.5 * weights, np.log(fine)))
+            fine = SizeDistribution(fine, weights).quantile(q)
             weights = np.full(q.size, 1.0 / q.size)
         self.e_mixture = Mixture(weights)
         #: The radii (m) of the restitution likelihood's mixture.

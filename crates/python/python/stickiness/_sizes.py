@@ -150,13 +150,35 @@ class SizeDistribution:
             )
         return cls(radii, weights)
 
-    def quantile(self, q: float) -> float:
-        """The radius (m) below which a fraction ``q`` of the grains lie (interpolated between
-        the nodes' mid-weights, as :func:`numpy.percentile` does for equal weights)."""
-        q = _args.scalar("q", q)
-        if not 0.0 <= q <= 1.0:
-            raise ValueError(f"q = {_args.shown(q)}: must be within 0 .. 1")
-        return float(np.exp(weighted_quantile(np.log(self.radii), self.weights, q)))
+    def quantile(self, q: Any) -> Any:
+        """The radius (m) below which a fraction ``q`` of the grains lie: ln R interpolated
+        linearly in the cumulative weight between the radii's mid-weights (as
+        :func:`numpy.percentile` reads equal weights), the extreme radii beyond them.
+
+        Parameters
+        ----------
+        q : float or array_like
+            Fractions of the grains (0 .. 1).
+
+        Returns
+        -------
+        float or numpy.ndarray
+            A float for one ``q``, an array of its shape otherwise.
+
+        Examples
+        --------
+        >>> import stickiness as st
+        >>> d = st.SizeDistribution([40e-6, 60e-6, 90e-6])
+        >>> (d.quantile([0.0, 0.5, 2 / 3, 1.0]) * 1e6).round(2).tolist()
+        [40.0, 60.0, 73.48, 90.0]
+        """
+        q = _args.float_array("q", q)
+        if not np.all((q >= 0.0) & (q <= 1.0)):  # False for NaN too
+            bad = q.ravel()[int(np.argmax(~((q >= 0.0) & (q <= 1.0)).ravel()))]
+            raise ValueError(f"q = {_args.shown(bad)}: must be within 0 .. 1")
+        mid = np.cumsum(self.weights) - 0.5 * self.weights
+        out = np.exp(np.interp(q, mid, np.log(self.radii)))
+        return float(out) if out.ndim == 0 else out
 
     @property
     def median(self) -> float:
