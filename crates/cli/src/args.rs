@@ -240,6 +240,16 @@ impl Setup {
         contact.chain(self.cautions.iter().cloned()).collect()
     }
 
+    /// `result`, after printing this setup's warnings on stderr if it failed: a warning of
+    /// implausible input (a Young's modulus of 1e30 Pa) often explains the failure, and the
+    /// report that would have carried it is not made.
+    pub fn or_warned<T, E: Into<CliError>>(&self, result: Result<T, E>) -> Result<T, CliError> {
+        result.map_err(|e| {
+            crate::output::print_warnings(&self.warnings());
+            e.into()
+        })
+    }
+
     /// `two identical spheres of 60 um of co2`, for titles.
     pub fn describe(&self) -> String {
         format!("{} of {}", self.contact.geometry(), self.material.short)

@@ -50,6 +50,12 @@ impl From<thresholds::sweep::AxisError> for CliError {
     }
 }
 
+impl From<thresholds::sweep::GridError> for CliError {
+    fn from(e: thresholds::sweep::GridError) -> Self {
+        CliError::Usage(e.message_for(&flag_of(e.field())))
+    }
+}
+
 impl From<ContactError> for CliError {
     fn from(e: ContactError) -> Self {
         match e {

@@ -144,14 +144,19 @@ impl Report {
 
     /// Prints the report in the requested form; warnings also go to stderr.
     pub fn print(&self, json: bool) {
-        for w in &self.warnings {
-            eprintln!("warning: {w}");
-        }
+        print_warnings(&self.warnings);
         if json {
             println!("{}", self.to_json());
         } else {
             print!("{}", self.to_human());
         }
+    }
+}
+
+/// Warnings on stderr, one line each, as every command prints them.
+pub fn print_warnings(warnings: &[String]) {
+    for w in warnings {
+        eprintln!("warning: {w}");
     }
 }
 

@@ -199,9 +199,22 @@ fn fit_range_down_to_the_jkr_limit_warns() {
     );
 }
 
-/// Valid but implausible input warns, on stderr and in the JSON.
+/// Valid but implausible input warns, on stderr and in the JSON; and before the error when the
+/// computation refuses it (a Young's modulus of 1e30 Pa puts the crack-speed bound on T_vis at
+/// 4 s), so that the slip is seen as the cause.
 #[test]
 fn implausible_input_warns() {
+    for cmd in ["v-stick", "v-frag", "collide --v-in 0.1"] {
+        let (code, _, err) = run_line(&format!("{cmd} --young 1e30 --t-vis 1e-9"));
+        assert_eq!(code, 2, "{err}");
+        let warned = err
+            .find("warning: young = 1e+30 Pa is outside")
+            .expect(&err);
+        assert!(
+            warned < err.find("error: --t-vis = 1e-9").expect(&err),
+            "{err}"
+        );
+    }
     let (code, out, err) = run_line("jkr --radius 60 --json");
     assert_eq!(code, 0);
     assert!(err.contains("did you mean 60e-6 m?"), "{err}");
@@ -344,4 +357,19 @@ fn t_end_records_the_spiral() {
         .map(|x| x.parse().unwrap())
         .collect();
     assert!(last[0] >= 2e-5, "integrated to {}", last[0]);
+}
+
+/// `fit-t-vis --v-stick` states in its help the cap it enforces (each trial T_vis is searched up
+/// to twice the target, within the 1e4 m/s search limit: 5000 m/s).
+#[test]
+fn fit_t_vis_states_its_cap_on_v_stick() {
+    let (code, _, err) = run_line("fit-t-vis --v-stick 20000");
+    assert_eq!(code, 2);
+    assert!(err.contains("<= 5000.0 (m/s)"), "{err}");
+    let (_, help, _) = run_line("fit-t-vis --help");
+    let line = help
+        .lines()
+        .find(|l| l.contains("Measured threshold velocity"))
+        .expect(&help);
+    assert!(line.contains("at most 5000.0"), "{line}");
 }

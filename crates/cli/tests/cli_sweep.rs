@@ -263,7 +263,7 @@ fn file_contract() {
                 "--t-vis",
                 "1e-12:1e-8:10000000",
             ],
-            "at most 1000000000 points",
+            "--t-vis: 10000000 values make a grid of 100000000000000 points",
         ),
     ] {
         let fresh = d.join("never.csv");

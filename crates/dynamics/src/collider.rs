@@ -139,14 +139,18 @@ impl Collider {
         if params.lambda > MAX_CRACK_SPEED_NUMBER || params.lambda.is_nan() {
             // the smallest T_vis these grains can be integrated at (c_a ~ 1/T_vis)
             let t_min = t_vis * params.lambda / MAX_CRACK_SPEED_NUMBER;
+            let m = contact.material();
             return Err(OutOfRange::new(
                 "t_vis",
                 t_vis,
                 format!(
-                    ">= {} s for these grains ({}, gamma_sv = {} J/m^2; the bound grows as sqrt(R) and as gamma_sv^(-3/2)): below it the crack-speed number c_a exceeds {:e} and the collision cannot be integrated (V_stick has reached its T_vis -> 0 limit there to about 1e-6; below it the tables answer, V_stick by default and a collision's e and V_out with the table method)",
+                    ">= {} s for these grains ({}, gamma_sv = {} J/m^2, young = {} Pa, poisson = {}, density = {} kg/m^3; the bound grows as young/(1 - poisson^2), as sqrt(density R) and as gamma_sv^(-3/2)): below it the crack-speed number c_a exceeds {:e} and the collision cannot be integrated (V_stick has reached its T_vis -> 0 limit there to about 1e-6; for k within 0.005 .. 0.05 the master tables answer below it, V_stick by default and a collision's e and V_out with the table method)",
                     numerics::format::number(t_min),
                     contact.geometry().as_arguments(),
-                    numerics::format::number(contact.material().gamma_sv),
+                    numerics::format::number(m.gamma_sv),
+                    numerics::format::number(m.young),
+                    numerics::format::number(m.poisson),
+                    numerics::format::number(m.density),
                     MAX_CRACK_SPEED_NUMBER
                 ),
                 "s",

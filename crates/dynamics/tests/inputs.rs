@@ -92,6 +92,79 @@ fn crack_speeds_beyond_the_limit_are_refused() {
     assert!(Collider::new(c, &law, t_min * 1.001).is_ok());
 }
 
+/// The refusal's message names the material's constants and how the bound moves with them:
+/// c_a = E* gamma t0/(sigma0^2 T_vis a_eq) (docs/model.md) with a_eq ~ (gamma R^2/E*)^(1/3),
+/// t0 ~ (rho R^(7/3))^(1/2) gamma^(-1/6) E*^(-1/3) and sigma0 ~ gamma makes the smallest T_vis
+/// grow as E* = E/(1 - nu^2), as sqrt(rho R) and as gamma^(-3/2): a Young's modulus of 1e30 Pa
+/// (a slip of units) is then visible as the cause.
+#[test]
+fn the_crack_speed_bound_names_the_constants_it_grows_with() {
+    let t_min = |m: Material, r: f64| {
+        let c = Contact::new(m, Geometry::identical(r)).unwrap();
+        1e-9 * c.dimensionless(1e-9).c_a / dynamics::MAX_CRACK_SPEED_NUMBER
+    };
+    let base = Material::co2();
+    let t0 = t_min(base, 60e-6);
+    let cases = [
+        (
+            Material {
+                young: 10.0 * base.young,
+                ..base
+            },
+            60e-6,
+            10.0,
+        ),
+        (
+            Material {
+                poisson: 0.4,
+                ..base
+            },
+            60e-6,
+            (1.0 - base.poisson.powi(2)) / 0.84,
+        ),
+        (
+            Material {
+                density: 4.0 * base.density,
+                ..base
+            },
+            60e-6,
+            2.0,
+        ),
+        (base, 240e-6, 2.0),
+        (
+            Material {
+                gamma_sv: 4.0 * base.gamma_sv,
+                ..base
+            },
+            60e-6,
+            0.125,
+        ),
+    ];
+    for (m, r, ratio) in cases {
+        let got = t_min(m, r) / t0;
+        assert!(
+            (got / ratio - 1.0).abs() < 1e-12,
+            "{m:?} {r}: {got} against {ratio}"
+        );
+    }
+    let huge = Material {
+        young: 1e30,
+        ..base
+    };
+    let err = Collider::new(
+        Contact::new(huge, Geometry::identical(60e-6)).unwrap(),
+        law(),
+        1e-9,
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(err.contains("young = 1e+30 Pa"), "{err}");
+    assert!(
+        err.contains("as young/(1 - poisson^2), as sqrt(density R) and as gamma_sv^(-3/2)"),
+        "{err}"
+    );
+}
+
 /// A Poisson ratio of 0 is a valid elastic material (its JKR quantities exist) but no collision:
 /// the drag A = T_vis/nu^2 of Section 2.5 is infinite, so c_D is too at every T_vis. The
 /// collider names poisson, not t_vis (which it blamed before, as too large); nu = -0.2 and

@@ -9,7 +9,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use thresholds::sweep::{
-    Cell, Grid, Laws, NamedMaterial, Partner, Row, TVisAxis, COLUMNS, WARNINGS_SEPARATOR,
+    Cell, Grid, GridError, Laws, NamedMaterial, Partner, Row, TVisAxis, COLUMNS, WARNINGS_SEPARATOR,
 };
 use thresholds::{OutOfRange, TVisLaw};
 
@@ -72,7 +72,10 @@ pub fn sweep<'py>(
         k,
     };
     let input = |bad: OutOfRange| -> PyErr { Error::Input { bad, index: 0 }.into() };
-    grid.validate().map_err(input)?;
+    grid.validate().map_err(|e| match e {
+        GridError::OutOfRange(bad) => input(bad),
+        too_large => PyValueError::new_err(too_large.to_string()),
+    })?;
     let opts = crate::args::search_options(v_max, rel_tol, method)?;
     opts.validate().map_err(input)?;
     let all = grid.chunks();

@@ -131,3 +131,12 @@ def test_messages_name_the_argument_and_show_plain_numbers(call, message):
     with pytest.raises(ValueError) as e:
         call()
     assert message in str(e.value) and "np." not in str(e.value)
+
+
+def test_none_and_a_dimensionless_quantity_are_named_as_such():
+    # from a review as a new user: "got objects (None)" and "got " (astropy's empty unit name)
+    with pytest.raises(TypeError, match="rel_tol: expected a number or an array of numbers, got None"):
+        st.v_stick(CO2, 60e-6, 1e-9, rel_tol=None)
+    u = pytest.importorskip("astropy.units")
+    with pytest.raises(ValueError, match="expected a quantity in m .*got a dimensionless number$"):
+        st.v_stick(CO2, 60e-6 * u.dimensionless_unscaled, 1e-9)

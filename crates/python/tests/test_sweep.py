@@ -85,8 +85,15 @@ def test_pickles_and_bad_axes():
         st.sweep(t_vis=1e-9, k=[0.01, 1.5])
     with pytest.raises(ValueError, match="co3"):
         st.sweep(material=["co2", "co3"], t_vis=1e-9)
-    with pytest.raises(TypeError, match="t_vis"):
+    with pytest.raises(TypeError, match="missing argument: t_vis"):
         st.sweep()
+    # both, as st.v_stick says it
+    with pytest.raises(ValueError, match="give t_vis or t_vis_law, not both"):
+        st.sweep(t_vis=1e-9, t_vis_law="co2")
+    # a grid too large names its longest axis and the product, before any work
+    with pytest.raises(ValueError, match=r"^k: 1001 values make a grid of 1001000000 points"):
+        st.sweep(radius=np.geomspace(1e-6, 1e-4, 1000), t_vis=np.geomspace(1e-12, 1e-8, 1000),
+                 k=np.linspace(0.005, 0.05, 1001))
     # an axis is a list: a 2-d array is not flattened silently
     with pytest.raises(ValueError, match=r"^radius: an axis is a value or a 1-d list"):
         st.sweep(radius=np.ones((2, 2)) * 1e-5, t_vis=1e-9)

@@ -13,7 +13,9 @@ pub struct FitTVisArgs {
     pub material: MaterialArgs,
     #[command(flatten)]
     pub geometry: GeometryArgs,
-    /// Measured threshold velocity for sticking V_stick (m/s, above V_stick,JKR).
+    /// Measured threshold velocity for sticking V_stick (m/s, above V_stick,JKR and at most
+    /// 5000.0: each trial T_vis is searched up to twice the target, within the 10000.0 m/s
+    /// search limit).
     #[arg(long, allow_hyphen_values = true)]
     pub v_stick: f64,
     /// Uncertainty of the measured V_stick (m/s, 0 <= dV < V_stick).
@@ -36,7 +38,13 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
     // not given
     setup.with_input("v_max", args.search.v_max);
     let law = args.k.crack_law()?;
-    let fit = thresholds::fit_t_vis(&setup.contact, &law, args.v_stick, args.v_stick_err, &opts)?;
+    let fit = setup.or_warned(thresholds::fit_t_vis(
+        &setup.contact,
+        &law,
+        args.v_stick,
+        args.v_stick_err,
+        &opts,
+    ))?;
     // without an uncertainty the title gives the value alone
     let err = if args.v_stick_err > 0.0 {
         format!(" ± {}", number(args.v_stick_err))

@@ -91,8 +91,9 @@ def si(name: str, value: Any) -> Any:
     try:
         return value.to_value(unit)
     except Exception:  # astropy.units.UnitConversionError (and unit parsing errors)
+        got = str(value.unit) or "a dimensionless number"  # astropy writes that unit as ""
         raise ValueError(
-            f"{name}: expected a quantity in {unit} (or convertible to it), got {value.unit}"
+            f"{name}: expected a quantity in {unit} (or convertible to it), got {got}"
         ) from None
 
 
@@ -111,6 +112,8 @@ def float_array(name: str, value: Any) -> np.ndarray:
     value = si(name, value)
     if isinstance(value, (bool, np.bool_)):
         raise TypeError(f"{name}: expected a number or an array of numbers, got a bool")
+    if value is None:
+        raise TypeError(f"{name}: expected a number or an array of numbers, got None")
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")

@@ -88,6 +88,45 @@ pub struct Chunk {
 /// refused before any work ([`Grid::validate`]) rather than exhausting the memory.
 pub const MAX_GRID_POINTS: usize = 1_000_000_000;
 
+/// Why a grid is refused before any work ([`Grid::validate`]).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum GridError {
+    /// A value of an axis out of its range.
+    #[error(transparent)]
+    OutOfRange(#[from] OutOfRange),
+    /// More points than [`MAX_GRID_POINTS`]; `axis` is the longest axis.
+    #[error("{}", self.message_for(self.field()))]
+    TooLarge {
+        /// The longest axis (its input name: `radius`, `t_vis`, `k`, ...).
+        axis: &'static str,
+        /// Its number of values.
+        length: usize,
+        /// The grid's number of points (the product of the axes' lengths).
+        points: f64,
+    },
+}
+
+impl GridError {
+    /// The input the refusal names: the axis out of range, or the longest axis.
+    pub fn field(&self) -> &'static str {
+        match self {
+            GridError::OutOfRange(o) => o.field,
+            GridError::TooLarge { axis, .. } => axis,
+        }
+    }
+
+    /// The message with the input under another name (a command-line flag).
+    pub fn message_for(&self, name: &str) -> String {
+        match self {
+            GridError::OutOfRange(o) => o.message_for(name),
+            GridError::TooLarge { length, points, .. } => format!(
+                "{name}: {length} values make a grid of {points:.0} points (the product of the \
+                 axes' lengths); at most {MAX_GRID_POINTS}"
+            ),
+        }
+    }
+}
+
 fn check_axis(
     field: &'static str,
     values: &[f64],
@@ -158,27 +197,26 @@ impl Grid {
     /// (T_vis >= 0), 0 < k <= 0.9 ([`dynamics::collision_k`]), gamma_SV > 0, every material
     /// with its gamma_SV valid, and its Poisson ratio nonzero where a T_vis > 0 asks for
     /// collisions ([`dynamics::collision_poisson`]).
-    pub fn validate(&self) -> Result<(), OutOfRange> {
+    pub fn validate(&self) -> Result<(), GridError> {
         if self.materials.is_empty() {
-            return Err(OutOfRange::new(
-                "material",
-                f64::NAN,
-                "at least one material",
-                "name",
-            ));
+            return Err(
+                OutOfRange::new("material", f64::NAN, "at least one material", "name").into(),
+            );
         }
         // the axes' product before anything is made from it (their chunks, the points)
         if self.len() > MAX_GRID_POINTS {
-            let (field, n) = self
-                .axis_lengths()
+            let lengths = self.axis_lengths();
+            let (axis, length) = lengths
                 .into_iter()
                 .max_by_key(|l| l.1)
                 .unwrap_or(("radius", 0));
-            let allowed = format!(
-                "such that the grid (the product of the axes' lengths) has at most \
-                 {MAX_GRID_POINTS} points"
-            );
-            return Err(OutOfRange::new(field, n as f64, allowed, "values"));
+            // in floating point: the product may overflow usize
+            let points = lengths.iter().map(|l| l.1 as f64).product();
+            return Err(GridError::TooLarge {
+                axis,
+                length,
+                points,
+            });
         }
         let positive = |v: f64| v.is_finite() && v > 0.0;
         if let Some(g) = &self.gamma_sv {

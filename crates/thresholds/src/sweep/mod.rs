@@ -23,7 +23,9 @@ pub mod resume;
 pub mod row;
 
 pub use axis::{canonical, geomspace, parse_axis, AxisError, MAX_AXIS_VALUES};
-pub use grid::{Chunk, Grid, Laws, NamedMaterial, Partner, Point, TVisAxis, MAX_GRID_POINTS};
+pub use grid::{
+    Chunk, Grid, GridError, Laws, NamedMaterial, Partner, Point, TVisAxis, MAX_GRID_POINTS,
+};
 pub use resume::{
     check_rows, file_text, remaining, verify_rows, written_rows, BadRow, Remaining, VerifyError,
     Written,
