@@ -73,14 +73,9 @@ pub fn run(args: &CollideArgs) -> Result<Report, CliError> {
     if let Some(path) = &args.trajectory {
         writable(path).map_err(|e| cannot_write(path, e))?;
     }
-    let (c, answered) = setup.or_warned(thresholds::restitution::collision(
-        &setup.contact,
-        &law,
-        t_vis,
-        args.v_in,
-        &opts,
-        method,
-    ))?;
+    let found =
+        thresholds::restitution::collision(&setup.contact, &law, t_vis, args.v_in, &opts, method);
+    let (c, answered) = setup.or_warned(found)?;
     if let Some(path) = &args.trajectory {
         let file = std::fs::File::create(path).map_err(|e| cannot_write(path, e))?;
         write_trajectory(file, &setup, &c).map_err(|e| {

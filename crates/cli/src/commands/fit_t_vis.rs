@@ -38,13 +38,8 @@ pub fn run(args: &FitTVisArgs) -> Result<Report, CliError> {
     // not given
     setup.with_input("v_max", args.search.v_max);
     let law = args.k.crack_law()?;
-    let fit = setup.or_warned(thresholds::fit_t_vis(
-        &setup.contact,
-        &law,
-        args.v_stick,
-        args.v_stick_err,
-        &opts,
-    ))?;
+    let found = thresholds::fit_t_vis(&setup.contact, &law, args.v_stick, args.v_stick_err, &opts);
+    let fit = setup.or_warned(found)?;
     // without an uncertainty the title gives the value alone
     let err = if args.v_stick_err > 0.0 {
         format!(" ± {}", number(args.v_stick_err))

@@ -21,12 +21,8 @@ pub fn run(args: &VFragArgs) -> Result<Report, CliError> {
     let (mut setup, t_vis, law) = args.point.resolve(Some(0.0))?;
     setup.with_input("k", law.k());
     let opts = args.search.options(&mut setup);
-    let f = setup.or_warned(thresholds::fragmentation(
-        &setup.contact,
-        &law,
-        t_vis,
-        &opts,
-    ))?;
+    let found = thresholds::fragmentation(&setup.contact, &law, t_vis, &opts);
+    let f = setup.or_warned(found)?;
     let v_max = f.no_bouncing_below.unwrap_or(opts.v_max_for(f.v_stick_jkr));
     setup.with_input("v_max", v_max);
     // the monomers' pair, whose V_stick sets V_frag (Section 6)

@@ -22,12 +22,8 @@ pub fn run(args: &VStickArgs) -> Result<Report, CliError> {
     let (mut setup, t_vis, law) = args.point.resolve(None)?;
     setup.with_input("k", law.k());
     let opts = args.search.options(&mut setup);
-    let th = setup.or_warned(thresholds::sticking_thresholds(
-        &setup.contact,
-        &law,
-        t_vis,
-        &opts,
-    ))?;
+    let found = thresholds::sticking_thresholds(&setup.contact, &law, t_vis, &opts);
+    let th = setup.or_warned(found)?;
     setup.with_input("v_max", th.v_max);
     let what = format!("Sticking thresholds of {}", setup.describe());
     let mut r = point_report(what, &setup, t_vis, law.k());
