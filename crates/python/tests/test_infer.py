@@ -279,6 +279,21 @@ def test_a_short_chain_warns():
         st.infer(CO2, R, v_stick=(0.04, 0.02), walkers=8, steps=60, seed=1)
 
 
+def test_a_collision_given_both_ways_is_warned_of():
+    # synthetic: the stuck collision at 0.01 m/s also given as e = 0 (it would count twice);
+    # e = 0 at a speed of no stuck outcome, or outcomes alone, are not warned of
+    from stickiness._likelihood import Data
+
+    sticking = ([0.01, 0.05, 0.2], [True, True, False])
+    twice = Data.parse(None, sticking, ([0.01, 0.3], [0.0, 0.4], 0.02)).counted_twice()
+    assert twice is not None and "1 of its 2 points" in twice and "v_in = 0.01 m/s" in twice
+    assert Data.parse(None, sticking, ([0.02, 0.2], [0.0, 0.3], 0.02)).counted_twice() is None
+    assert Data.parse(None, sticking, None).counted_twice() is None
+    with pytest.warns(st.StickinessWarning, match="counts twice"):
+        st.infer(CO2, R, sticking=sticking, restitution=([0.01], [0.0], [0.02]), walkers=8,
+                 steps=20, seed=1)
+
+
 def test_the_plot_is_a_corner_figure(paper):
     import matplotlib.figure
 

@@ -326,7 +326,8 @@ def infer(
         with probability below 1e-6 there (not fitted: a unit, a prior, or data sets that
         disagree); for a ``SizeDistribution``, restitution radii too few for the data (ln L at the
         chain's best point moving by more than 1 with e computed at twice the sample's radii:
-        raise ``restitution_nodes``).
+        raise ``restitution_nodes``); restitution data with e = 0 at the speed of a sticking
+        outcome that stuck (the same collision given twice: each datum counts as independent).
 
     Notes
     -----
@@ -387,6 +388,9 @@ def infer(
     if seed is not None:
         seed = _count("seed", seed, 0)
     data = Data.parse(v_stick, sticking, restitution)
+    twice = data.counted_twice()
+    if twice is not None:
+        warnings.warn(twice, StickinessWarning, stacklevel=2)
     _contradiction(sizes, data)
     # checks k, rel_tol and the geometry once, with the core's messages
     nodes = _count("restitution_nodes", restitution_nodes, 1, MAX_RESTITUTION_NODES)

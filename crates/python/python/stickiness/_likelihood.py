@@ -176,6 +176,24 @@ class Data:
             bounces = (v, e, e_err)
         return cls(threshold, outcomes, bounces, v_err)
 
+    def counted_twice(self) -> Optional[str]:
+        """A warning where collisions seem given both as sticking outcomes and as restitution
+        data (e = 0 at the speed of an outcome that stuck): each datum is taken as independent,
+        so such a collision would count twice."""
+        if self.sticking is None or self.restitution is None:
+            return None
+        v, e, _ = self.restitution
+        both = (e == 0.0) & np.isin(v, self.sticking[0][self.sticking[1]])
+        if not both.any():
+            return None
+        first = float(v[int(np.argmax(both))])
+        return (
+            f"restitution: {int(both.sum())} of its {v.size} points have e = 0 at the speed of a "
+            f"sticking outcome that stuck (the first at v_in = {first:.6g} m/s): each datum is "
+            f"taken as independent, so a collision given both ways counts twice; give each "
+            f"collision once"
+        )
+
     def fastest(self) -> float:
         """The highest speed (m/s) the threshold data need V_stick up to."""
         speeds = [0.0]
