@@ -53,7 +53,8 @@ PARAMETERS: Dict[str, str] = {
         ``'table'`` (default): the master tables of V_stick / V_stick,JKR over the two
         dimensionless numbers and k, about a microsecond a point and within 1e-5 of the search
         where they vouch for their accuracy; elsewhere (a thin band at the no-bouncing cliff, k
-        outside 0.005-0.05, an explicit ``rel_tol`` below 1e-5) the search answers.
+        outside 0.005-0.05, a ``rel_tol`` below 1e-5 other than the default 1e-6) the search
+        answers.
         ``'search'``: the exact search, 20-100 collisions, milliseconds a point. The result's
         ``method`` says which answered.""",
     "broadcast": """Every number argument broadcasts like numpy: scalars in give Python floats out,
