@@ -90,6 +90,8 @@ impl From<ThresholdsError> for CliError {
         match (e.out_of_range(), e) {
             (Some(o), _) => o.into(),
             (None, ThresholdsError::Dynamics(d)) => d.into(),
+            (None, ThresholdsError::Axis(a)) => a.into(),
+            (None, ThresholdsError::Grid(g)) => g.into(),
             (
                 None,
                 ThresholdsError::Unreachable {

@@ -78,7 +78,7 @@ pub fn collision_poisson(nu: f64) -> Result<f64, OutOfRange> {
 /// The largest crack-speed number c_a (lambda) a collision is integrated at: at 1.5e10 a
 /// collision of 1 cm grains takes 2e5 steps, at 1.5e11 it does not end within the step budget
 /// of 2e6 (the crack must follow beta = 1 to 1e-11); V_stick has converged there to its
-/// T_vis -> 0 limit within 2e-7 (`thresholds::MasterTable` clamps c_a at 1e8).
+/// T_vis -> 0 limit within 2e-7 (`thresholds::MasterTables` clamps c_a at 1e8).
 pub const MAX_CRACK_SPEED_NUMBER: f64 = 3e10;
 
 /// Integrates collisions of one contact at one relaxation time.

@@ -132,8 +132,8 @@ impl SolverOptions {
         self
     }
 
-    /// Checks every field: `0 < rtol < 1`, `atol > 0`, `decide_after >= 0` (all finite) and
-    /// `max_oscillations >= 1`.
+    /// Checks every field: `0 < rtol < 1`, `atol > 0`, `decide_after >= 0` (all finite),
+    /// `max_steps >= 1` and `max_oscillations >= 1`.
     pub fn validate(&self) -> Result<(), OutOfRange> {
         if !(self.rtol.is_finite() && self.rtol > 0.0 && self.rtol < 1.0) {
             return Err(OutOfRange::new(
@@ -151,6 +151,10 @@ impl SolverOptions {
                 ">= 0 and finite",
                 "s",
             ));
+        }
+        if self.max_steps == 0 {
+            // no step decides anything: every collision would end undecided
+            return Err(OutOfRange::new("max_steps", 0.0, ">= 1", "steps"));
         }
         if self.max_oscillations == 0 {
             return Err(OutOfRange::new(

@@ -79,19 +79,21 @@ pub struct Collision {
     pub e: f64,
     /// Approach speed at the end of contact V_out (m/s; 0 for sticking).
     pub v_out: f64,
-    /// Duration of the contact (s); `None` for sticking.
+    /// Duration of the contact (s); `None` for sticking, and for an answer of the restitution
+    /// tables ([`Collision::from_rebound`]: no trajectory was integrated).
     pub contact_time: Option<f64>,
     /// How sticking was decided; `None` otherwise.
     pub sticking_criterion: Option<StickingCriterion>,
-    /// Time at which the outcome was decided (s).
+    /// Time at which the outcome was decided (s; NaN for an answer of the restitution tables).
     pub decided_at: f64,
     /// Largest increase of the total energy between consecutive steps (J): an integration error
     /// diagnostic, since the exact energy never increases.
     pub max_energy_increase: f64,
     /// Largest beta reached at a solver step (dimensionless): for a sticking collision, how close the
-    /// contact came to its end at beta = (1 - eps)/k.
+    /// contact came to its end at beta = (1 - eps)/k (NaN for an answer of the restitution
+    /// tables).
     pub beta_max: f64,
-    /// Solver steps taken (by `method`).
+    /// Solver steps taken (by `method`; 0 for an answer of the restitution tables).
     pub steps: usize,
     /// The integrator that decided the outcome ([`Method::Auto`] resolved: Tsit45 or BDF), or
     /// [`Method::Auto`] itself where nothing was integrated (an answer of the restitution

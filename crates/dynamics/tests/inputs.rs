@@ -190,3 +190,24 @@ fn a_poisson_ratio_of_zero_is_named_for_a_collision() {
         assert!(Collider::new(with_nu(nu), law(), 1e-9).is_ok(), "nu = {nu}");
     }
 }
+
+/// Solver options that cannot decide a collision are refused by name: no step at all, or no
+/// oscillation to prove sticking by.
+#[test]
+fn options_that_decide_nothing_are_refused_by_name() {
+    use dynamics::SolverOptions;
+    let steps = SolverOptions {
+        max_steps: 0,
+        ..SolverOptions::DEFAULT
+    };
+    assert_eq!(steps.validate().unwrap_err().field, "max_steps");
+    let oscillations = SolverOptions {
+        max_oscillations: 0,
+        ..SolverOptions::DEFAULT
+    };
+    assert_eq!(
+        oscillations.validate().unwrap_err().field,
+        "max_oscillations"
+    );
+    assert!(SolverOptions::DEFAULT.validate().is_ok());
+}

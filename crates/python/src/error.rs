@@ -49,7 +49,9 @@ impl Error {
         }
         match e {
             ThresholdsError::Dynamics(DynamicsError::Contact(c)) => Self::from_contact(c, index),
-            ThresholdsError::Unreachable { .. } => Error::Value(e.to_string()),
+            ThresholdsError::Unreachable { .. }
+            | ThresholdsError::Axis(_)
+            | ThresholdsError::Grid(_) => Error::Value(e.to_string()),
             other => Error::Solver(other.to_string()),
         }
     }

@@ -11,9 +11,17 @@ pub enum ThresholdsError {
     /// A collision failed, or its inputs were invalid.
     #[error(transparent)]
     Dynamics(#[from] DynamicsError),
-    /// A parameter of the search is outside its allowed range.
+    /// A parameter of the search is outside its allowed range (an input out of range caught
+    /// deeper arrives as [`ThresholdsError::Dynamics`]: [`ThresholdsError::out_of_range`] finds
+    /// it wherever it was caught).
     #[error(transparent)]
     OutOfRange(#[from] OutOfRange),
+    /// A sweep's axis that cannot be read ([`crate::sweep::parse_axis`]).
+    #[error(transparent)]
+    Axis(#[from] crate::sweep::AxisError),
+    /// A sweep's grid refused before any work ([`crate::sweep::Grid::validate`]).
+    #[error(transparent)]
+    Grid(#[from] crate::sweep::GridError),
     /// No sticking collision was found down to the lower end of the search.
     #[error(
         "no sticking collision at or above {} m/s (T_vis = {} s): the grains never stick",
@@ -77,6 +85,7 @@ impl ThresholdsError {
     pub fn out_of_range(&self) -> Option<OutOfRange> {
         match self {
             ThresholdsError::OutOfRange(o) => Some(o.clone()),
+            ThresholdsError::Grid(crate::sweep::GridError::OutOfRange(o)) => Some(o.clone()),
             ThresholdsError::Dynamics(d) => d.out_of_range().cloned(),
             ThresholdsError::BelowJkr {
                 v_stick,

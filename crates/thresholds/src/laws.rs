@@ -43,7 +43,20 @@ pub struct Fragmentation {
 }
 
 /// V_frag = 10 V_stick of aggregates of the monomers of `contact` at relaxation time `t_vis`
-/// (s, >= 0; 0 is the JKR limit), Section 6.
+/// (s, >= 0; 0 is the JKR limit), Section 6. (Python's `stickiness.v_frag` and the CLI's
+/// `v-frag` are this; [`v_frag`] is the factor alone.)
+///
+/// # Example
+/// ```
+/// use thresholds::{fragmentation, Contact, CrackLaw, Geometry, Material, SearchOptions, TVisLaw};
+/// // aggregates of CO2 monomers of 0.1 um, T_vis from the size law of Section 5.3
+/// let r1 = 0.1e-6;
+/// let c = Contact::new(Material::co2(), Geometry::identical(r1))?;
+/// let law = CrackLaw::new(0.01)?;
+/// let f = fragmentation(&c, &law, TVisLaw::Co2.t_vis(r1), &SearchOptions::default())?;
+/// assert!((f.v_frag.unwrap() - 50.885).abs() < 1e-3); // m/s (at 1650 kg/m^3: 49.02)
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[doc(alias = "V_frag")]
 pub fn fragmentation(
     contact: &Contact,

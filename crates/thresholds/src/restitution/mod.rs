@@ -412,8 +412,9 @@ pub const DECLINED_METHOD: dynamics::Method = dynamics::Method::Bdf;
 /// the restitution tables with [`crate::ThresholdMethod::Table`] where they vouch for it (and
 /// no trajectory or `decide_after` is asked of `solver`: those need the integration), else
 /// integrated with `solver` (where the tables decline at a k they cover, with
-/// [`DECLINED_METHOD`] if `solver` says `Auto`); and which answered. A table answer has the
-/// outcome, e and V_out only ([`dynamics::Collision::from_rebound`]).
+/// [`DECLINED_METHOD`] if `solver` says `Auto`); and which answered: `Table`, or `Search` for
+/// the ODE (the names the threshold searches share; the CLI and Python call it `ode`). A table
+/// answer has the outcome, e and V_out only ([`dynamics::Collision::from_rebound`]).
 pub fn collision(
     contact: &Contact,
     law: &greenwood::CrackLaw,

@@ -69,19 +69,23 @@ pub fn parse_axis(axis: &str, spec: &str) -> Result<Vec<f64>, AxisError> {
     Ok(geomspace(start, stop, n))
 }
 
-/// `n` values from `start` to `stop` (both > 0) evenly spaced in log, both ends exact, computed
-/// as `numpy.geomspace(start, stop, n)` does: `10^(log10 start + i step)`. The one log grid of
-/// the workspace (sweeps, figures).
+/// `n` values from `start` to `stop` (both > 0 and finite, else the values between are NaN;
+/// [`parse_axis`] checks them) evenly spaced in log, both ends exact, computed as
+/// `numpy.geomspace(start, stop, n)` does: `10^(log10 start + i step)`; none for `n = 0`. The
+/// one log grid of the workspace (sweeps, figures).
 ///
 /// # Example
 /// ```
 /// use thresholds::sweep::geomspace;
 /// assert_eq!(geomspace(1e-12, 1e-8, 5), vec![1e-12, 1e-11, 1e-10, 1e-9, 1e-8]);
 /// assert_eq!(geomspace(2.0, 8.0, 1), vec![2.0]);
+/// assert!(geomspace(2.0, 8.0, 0).is_empty());
 /// ```
 pub fn geomspace(start: f64, stop: f64, n: usize) -> Vec<f64> {
-    if n == 1 {
-        return vec![start];
+    match n {
+        0 => return Vec::new(),
+        1 => return vec![start],
+        _ => {}
     }
     let (a, b) = (start.log10(), stop.log10());
     let step = (b - a) / (n - 1) as f64;
@@ -142,5 +146,40 @@ mod tests {
         );
         assert!(e("1:2:10000001").ends_with("from 1 to 10000000"));
         assert!(e("-1:2:3").contains("START and STOP > 0"));
+    }
+
+    /// A sweep read and checked with `?` throughout: the axis and grid errors convert into
+    /// [`crate::ThresholdsError`], and a grid's value out of range is found by `out_of_range`.
+    #[test]
+    fn sweep_errors_convert_for_the_question_mark() {
+        use crate::sweep::{Grid, NamedMaterial, Partner, TVisAxis};
+        use crate::{Material, ThresholdsError};
+        let grid = |radius: &str, k: &str| -> Result<Grid, ThresholdsError> {
+            let grid = Grid {
+                materials: vec![NamedMaterial {
+                    name: "co2".into(),
+                    material: Material::co2(),
+                }],
+                gamma_sv: None,
+                radius: parse_axis("radius", radius)?,
+                partner: Partner::Same,
+                t_vis: TVisAxis::Values(vec![1e-9]),
+                k: parse_axis("k", k)?,
+            };
+            grid.validate()?;
+            Ok(grid)
+        };
+        assert_eq!(grid("1e-6:1e-4:3", "0.01").unwrap().len(), 3);
+        let axis = grid("1e-6:x:3", "0.01").unwrap_err();
+        assert!(matches!(axis, ThresholdsError::Axis(_)), "{axis}");
+        let k = grid("1e-6", "0.01,0.95").unwrap_err();
+        assert_eq!(k.out_of_range().map(|o| o.field), Some("k"), "{k}");
+        let large = grid("1e-6:1e-4:100000", "0.005:0.05:100000").unwrap_err();
+        assert!(
+            large
+                .to_string()
+                .contains("make a grid of 10000000000 points"),
+            "{large}"
+        );
     }
 }

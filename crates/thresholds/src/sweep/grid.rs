@@ -333,14 +333,15 @@ impl Grid {
 /// let laws = Laws::new(&[0.01, 0.02, 0.01])?;
 /// assert_eq!(laws.get(0.02)?.k(), 0.02);
 /// assert!(laws.get(0.05).is_err()); // not among the grid's k
-/// assert!(Laws::new(&[1.5]).is_err()); // k must lie in (0, 1)
+/// assert!(Laws::new(&[1.5]).is_err()); // the crack law's 0 < k < 1 (collisions: k <= 0.9)
 /// # Ok::<(), thresholds::ThresholdsError>(())
 /// ```
 #[derive(Debug, Clone)]
 pub struct Laws(BTreeMap<u64, CrackLaw>);
 
 impl Laws {
-    /// The tables of every distinct value in `k` (dimensionless, 0 < k < 1).
+    /// The tables of every distinct value in `k` (dimensionless, 0 < k < 1, the crack law's
+    /// range; a grid's collisions need k <= 0.9, which [`Grid::validate`] checks).
     pub fn new(k: &[f64]) -> Result<Self, ThresholdsError> {
         let mut map = BTreeMap::new();
         for &x in k {
