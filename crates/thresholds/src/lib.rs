@@ -66,15 +66,17 @@ pub mod sweep;
 mod text;
 
 pub use contact::{
-    Contact, ContactError, Dimensionless, Geometry, Material, Warning, JKR_QUANTITIES, PRESETS,
+    elastic_from_sound_speeds, Contact, ContactError, Dimensionless, Geometry, Material, Warning,
+    JKR_QUANTITIES, PRESETS, SURFACE_FORCE_RANGE, TABOR_MIN,
 };
 pub use dynamics::{
     collision_k, collision_poisson, Backend, Collider, Collision, DynamicsError, Method, Outcome,
-    Rebound, SolverOptions, StickingCriterion, TrajectoryPoint, K_MAX, K_RANGE,
+    Rebound, Scales, SolverOptions, StickingCriterion, TrajectoryPoint, EPS, K_MAX, K_RANGE,
+    MAX_CRACK_SPEED_NUMBER,
 };
 pub use error::ThresholdsError;
 pub use fit::{fit_t_vis, t_vis_for_v_stick, FitWarning, TVisFit, T_VIS_REL_TOL, V_STICK_FIT_MAX};
-pub use greenwood::{CrackLaw, GreenwoodError};
+pub use greenwood::{CrackLaw, CrackSpeed, GreenwoodError};
 pub use laws::{
     fragmentation, v_frag, Fragmentation, TVisLaw, T_VIS_EXPONENT, T_VIS_LAWS, V_FRAG_FACTOR,
 };
