@@ -363,9 +363,16 @@ fn t_end_records_the_spiral() {
 /// to twice the target, within the 1e4 m/s search limit: 5000 m/s).
 #[test]
 fn fit_t_vis_states_its_cap_on_v_stick() {
-    let (code, _, err) = run_line("fit-t-vis --v-stick 20000");
+    let (code, _, err) = run_line("fit-t-vis --v-stick 5000.1");
     assert_eq!(code, 2);
     assert!(err.contains("<= 5000.0 (m/s)"), "{err}");
+    // the highest target V_stick + dV too, named as the uncertainty the user gave
+    let (code, _, err) = run_line("fit-t-vis --v-stick 4000 --v-stick-err 2000");
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--v-stick-err = 2000.0: must be <= 1000.0 m/s here"),
+        "{err}"
+    );
     let (_, help, _) = run_line("fit-t-vis --help");
     let line = help
         .lines()

@@ -82,12 +82,13 @@ pub struct Collision {
     /// Duration of the contact (s); `None` for sticking, and for an answer of the restitution
     /// tables ([`Collision::from_rebound`]: no trajectory was integrated).
     pub contact_time: Option<f64>,
-    /// How sticking was decided; `None` otherwise.
+    /// How sticking was decided; `None` otherwise (and for an answer of the restitution tables).
     pub sticking_criterion: Option<StickingCriterion>,
     /// Time at which the outcome was decided (s; NaN for an answer of the restitution tables).
     pub decided_at: f64,
     /// Largest increase of the total energy between consecutive steps (J): an integration error
-    /// diagnostic, since the exact energy never increases.
+    /// diagnostic, since the exact energy never increases (0 for an answer of the restitution
+    /// tables: nothing was integrated).
     pub max_energy_increase: f64,
     /// Largest beta reached at a solver step (dimensionless): for a sticking collision, how close the
     /// contact came to its end at beta = (1 - eps)/k (NaN for an answer of the restitution

@@ -94,24 +94,31 @@ fn crack_speeds_beyond_the_limit_are_refused() {
 
 /// The refusal's message names the material's constants and how the bound moves with them:
 /// c_a = E* gamma t0/(sigma0^2 T_vis a_eq) (docs/model.md) with a_eq ~ (gamma R^2/E*)^(1/3),
-/// t0 ~ (rho R^(7/3))^(1/2) gamma^(-1/6) E*^(-1/3) and sigma0 ~ gamma makes the smallest T_vis
-/// grow as E* = E/(1 - nu^2), as sqrt(rho R) and as gamma^(-3/2): a Young's modulus of 1e30 Pa
-/// (a slip of units) is then visible as the cause.
+/// t0 = sqrt(m* delta_eq/(3 pi gamma R)) ~ sqrt(m*/gamma) a_eq/R and sigma0 ~ gamma makes the
+/// smallest T_vis grow as E* = E/(1 - nu^2), as sqrt(m*)/R (sqrt(rho R1) at one shape of the
+/// pair: identical spheres, a wall) and as gamma^(-3/2): a Young's modulus of 1e30 Pa (a slip of
+/// units) is then visible as the cause.
 #[test]
 fn the_crack_speed_bound_names_the_constants_it_grows_with() {
-    let t_min = |m: Material, r: f64| {
-        let c = Contact::new(m, Geometry::identical(r)).unwrap();
+    let t_min = |m: Material, g: Geometry| {
+        let c = Contact::new(m, g).unwrap();
         1e-9 * c.dimensionless(1e-9).c_a / dynamics::MAX_CRACK_SPEED_NUMBER
     };
     let base = Material::co2();
-    let t0 = t_min(base, 60e-6);
+    let g0 = Geometry::identical(60e-6);
+    let t0 = t_min(base, g0);
+    // sqrt(m*)/R of a geometry against the base pair's
+    let shape = |g: Geometry| {
+        let m = |g: Geometry| g.reduced_mass(base.density).sqrt() / g.reduced_radius();
+        m(g) / m(g0)
+    };
     let cases = [
         (
             Material {
                 young: 10.0 * base.young,
                 ..base
             },
-            60e-6,
+            g0,
             10.0,
         ),
         (
@@ -119,7 +126,7 @@ fn the_crack_speed_bound_names_the_constants_it_grows_with() {
                 poisson: 0.4,
                 ..base
             },
-            60e-6,
+            g0,
             (1.0 - base.poisson.powi(2)) / 0.84,
         ),
         (
@@ -127,40 +134,44 @@ fn the_crack_speed_bound_names_the_constants_it_grows_with() {
                 density: 4.0 * base.density,
                 ..base
             },
-            60e-6,
+            g0,
             2.0,
         ),
-        (base, 240e-6, 2.0),
+        (base, Geometry::identical(240e-6), 2.0),
         (
             Material {
                 gamma_sv: 4.0 * base.gamma_sv,
                 ..base
             },
-            60e-6,
+            g0,
             0.125,
         ),
+        // a larger partner raises R and lowers the bound; a wall alike
+        (
+            base,
+            Geometry::spheres(60e-6, 1e-3),
+            shape(Geometry::spheres(60e-6, 1e-3)),
+        ),
+        (base, Geometry::wall(60e-6), shape(Geometry::wall(60e-6))),
     ];
-    for (m, r, ratio) in cases {
-        let got = t_min(m, r) / t0;
+    for (m, g, ratio) in cases {
+        let got = t_min(m, g) / t0;
         assert!(
             (got / ratio - 1.0).abs() < 1e-12,
-            "{m:?} {r}: {got} against {ratio}"
+            "{m:?} {g:?}: {got} against {ratio}"
         );
     }
+    assert!(shape(Geometry::wall(60e-6)) < 1.0);
     let huge = Material {
         young: 1e30,
         ..base
     };
-    let err = Collider::new(
-        Contact::new(huge, Geometry::identical(60e-6)).unwrap(),
-        law(),
-        1e-9,
-    )
-    .unwrap_err()
-    .to_string();
+    let err = Collider::new(Contact::new(huge, g0).unwrap(), law(), 1e-9)
+        .unwrap_err()
+        .to_string();
     assert!(err.contains("young = 1e+30 Pa"), "{err}");
     assert!(
-        err.contains("as young/(1 - poisson^2), as sqrt(density R) and as gamma_sv^(-3/2)"),
+        err.contains("young/(1 - poisson^2), as sqrt(m*)/R"),
         "{err}"
     );
 }

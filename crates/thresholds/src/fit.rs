@@ -358,9 +358,26 @@ pub fn fit_t_vis(
         )
         .into());
     }
+    // the highest target, V_stick + dV, is searched too: named as the uncertainty that took it
+    // past the cap (v_stick itself was checked above)
+    let top = v_stick + v_stick_err;
+    if top > V_STICK_FIT_MAX {
+        return Err(OutOfRange::new(
+            "v_stick_err",
+            v_stick_err,
+            format!(
+                "<= {} m/s here, so that V_stick + dV stays within {} m/s (each trial T_vis \
+                 is searched up to twice its target, within the {} m/s search limit)",
+                number(V_STICK_FIT_MAX - v_stick),
+                number(V_STICK_FIT_MAX),
+                number(V_SEARCH_LIMIT)
+            ),
+            "m/s",
+        )
+        .into());
+    }
     // a given limit only raises the trials' own (twice their target): one below the highest
     // target cannot be meant
-    let top = v_stick + v_stick_err;
     if let Some(v_max) = opts.v_max.filter(|&v| v < top) {
         return Err(OutOfRange::new(
             "v_max",

@@ -88,8 +88,9 @@ pub enum ThresholdMethod {
     Search,
     /// The master tables ([`crate::MasterTables`], the default): about a microsecond, within
     /// 1e-5 of the search where they vouch for their accuracy; elsewhere (a thin band at the
-    /// cliff, k outside 0.005-0.05, a `rel_tol` below [`crate::master::TABLE_REL_TOL`] asked
-    /// for explicitly) the exact search answers, and the result says so.
+    /// cliff, k outside 0.005-0.05, a `rel_tol` below [`crate::master::TABLE_REL_TOL`] other
+    /// than the default [`crate::DEFAULT_REL_TOL`]) the exact search answers, and the result
+    /// says so.
     #[default]
     Table,
 }

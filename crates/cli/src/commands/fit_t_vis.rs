@@ -13,8 +13,8 @@ pub struct FitTVisArgs {
     pub material: MaterialArgs,
     #[command(flatten)]
     pub geometry: GeometryArgs,
-    /// Measured threshold velocity for sticking V_stick (m/s, above V_stick,JKR and at most
-    /// 5000.0: each trial T_vis is searched up to twice the target, within the 10000.0 m/s
+    /// Measured threshold velocity for sticking V_stick (m/s, above V_stick,JKR; V_stick + dV at
+    /// most 5000.0: each trial T_vis is searched up to twice the target, within the 10000.0 m/s
     /// search limit).
     #[arg(long, allow_hyphen_values = true)]
     pub v_stick: f64,

@@ -214,6 +214,15 @@ def law_name(name: str, value: Any, required: bool = False) -> Optional[str]:
     return choice(name, value, ("co2", "h2o"))
 
 
+def t_vis_or_law(value: Any, law: Any, required: bool) -> None:
+    """Refuses ``t_vis`` and ``t_vis_law`` both given (``ValueError``), and neither where one is
+    ``required`` (``TypeError``, as Python names a missing argument)."""
+    if value is not None and law is not None:
+        raise ValueError("give t_vis or t_vis_law, not both")
+    if required and value is None and law is None:
+        raise TypeError("missing argument: t_vis (s) or t_vis_law ('co2' or 'h2o')")
+
+
 def t_vis(
     value: Any, law: Optional[str], radius: Any, default: Optional[float], of: Any = None
 ) -> Any:
@@ -221,19 +230,14 @@ def t_vis(
     A law of one ice with the material ``of`` holding the other ice's constants is warned of
     (``StickinessWarning``, at the public function's caller)."""
     law = law_name("t_vis_law", law)
+    t_vis_or_law(value, law, default is None)
     if law is not None:
-        if value is not None:
-            raise ValueError("give t_vis or t_vis_law, not both")
         caution = None if of is None else _core.t_vis_law_mismatch(law, material(of))
         if caution is not None:
             warnings.warn(caution, StickinessWarning, stacklevel=3)
         b = Broadcast(radius=radius)
         return b.out(b.call(_core.t_vis_law, law, b.flat["radius"]))
-    if value is None:
-        if default is None:
-            raise TypeError("missing argument: t_vis (s) or t_vis_law ('co2' or 'h2o')")
-        return default
-    return value
+    return default if value is None else value
 
 
 #: The names of result codes as numpy arrays, made once ("search"/"table", "ode"/"table"):

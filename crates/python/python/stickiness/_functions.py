@@ -290,8 +290,8 @@ def fit_t_vis(
     {material}
     {radius}
     v_stick : float, array_like or Quantity
-        The measured V_stick (m/s), above V_stick,JKR and at most 5000 (each trial T_vis is
-        searched up to twice it, within the 1e4 m/s search limit).
+        The measured V_stick (m/s), above V_stick,JKR; V_stick + ``v_stick_err`` at most 5000
+        m/s (each trial T_vis is searched up to twice it, within the 1e4 m/s search limit).
     v_stick_err : float, array_like or Quantity, optional
         Its uncertainty dV (m/s, 0 <= dV < V_stick). Default 0.
     {k}

@@ -18,8 +18,9 @@ import numpy as np
 from . import _args, _core
 from ._args import StickinessWarning
 from ._core import DEFAULT_K, DEFAULT_RADIUS, DEFAULT_REL_TOL
+from ._data import Data
 from ._judge import judged
-from ._likelihood import PARAMETERS, RESTITUTION_NODES, Data, Model, priors as _priors
+from ._likelihood import PARAMETERS, RESTITUTION_NODES, Model, priors as _priors
 from ._posterior import Posterior
 from ._sampler import MIN_WALKERS, integrated_time, sample
 from ._sizes import SizeDistribution

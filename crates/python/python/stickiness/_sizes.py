@@ -152,8 +152,8 @@ class SizeDistribution:
 
     def quantile(self, q: Any) -> Any:
         """The radius (m) below which a fraction ``q`` of the grains lie: ln R interpolated
-        linearly in the cumulative weight between the radii's mid-weights (as
-        :func:`numpy.percentile` reads equal weights), the extreme radii beyond them.
+        linearly in the cumulative weight between the radii's mid-weights (for equal weights
+        ``numpy.percentile(ln R, 100 q, method="hazen")``), the extreme radii beyond them.
 
         Parameters
         ----------

@@ -216,11 +216,7 @@ def sweep(
     ([0.0205, 0.04138], ['table', 'table'])
     """
     wall = _args.geometry(radius2, wall)
-    # as v_stick and the other functions say it
-    if t_vis is not None and t_vis_law is not None:
-        raise ValueError("give t_vis or t_vis_law, not both")
-    if t_vis is None and t_vis_law is None:
-        raise TypeError("missing argument: t_vis (s) or t_vis_law ('co2' or 'h2o')")
+    _args.t_vis_or_law(t_vis, t_vis_law, required=True)
     if not isinstance(chunks_per_task, int) or isinstance(chunks_per_task, bool) or chunks_per_task < 1:
         raise ValueError(f"chunks_per_task = {chunks_per_task!r}: must be an integer >= 1")
     progress = _args.flag("progress", progress)
